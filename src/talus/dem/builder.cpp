@@ -1,0 +1,219 @@
+#include "talus/dem/builder.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "talus/core/error.hpp"
+#include "talus/dem/packing.hpp"
+
+namespace talus::dem {
+
+double peer_jitter_hash(int i, int j, int k, int c) {
+  const double u = 43758.5453 * std::sin(12.9898 * i + 78.233 * j + 37.719 * k + 4.1414 * c);
+  return u - std::floor(u);
+}
+
+namespace {
+
+struct Placed {
+  Vec3 x, v, w;
+  double r;
+  int material;
+};
+
+int material_of(const DemScenario& sc, const std::string& name, const std::string& where) {
+  for (std::size_t k = 0; k < sc.materials.size(); ++k)
+    if (sc.materials[k].name == name) return static_cast<int>(k);
+  throw InputError(where + ": unknown material '" + name + "'");
+}
+
+void lattice(const ParticleSourceParams& s, int dim, int mat, std::vector<Placed>& out) {
+  const double a = s.spacing;
+  int n[3] = {1, 1, 1};
+  for (int d = 0; d < dim; ++d)
+    n[d] = static_cast<int>(std::floor((s.box_max[d] - s.box_min[d]) / a + 1e-9));
+  const double amp = 0.4 * (a - 2.0 * s.radius);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        Vec3 x = s.box_min + Vec3((i + 0.5) * a, (j + 0.5) * a, dim == 3 ? (k + 0.5) * a : 0.0);
+        if (s.jitter == "peer") {
+          x.x() += amp * (2.0 * peer_jitter_hash(i, j, k, 0) - 1.0);
+          x.y() += amp * (2.0 * peer_jitter_hash(i, j, k, 1) - 1.0);
+        }
+        out.push_back({x, Vec3::Zero(), Vec3::Zero(), s.radius, mat});
+      }
+}
+
+void from_file(const ParticleSourceParams& s, int mat, std::vector<Placed>& out) {
+  std::ifstream in(s.file);
+  if (!in) throw InputError(s.file + ": cannot open particle file");
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0])))
+      continue;
+    for (char& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream ls(line);
+    double x, y, z, r;
+    if (!(ls >> x >> y >> z >> r) || !(r > 0.0))
+      throw InputError(s.file + ":" + std::to_string(lineno) +
+                       ": expected 'x, y, z, radius' with a positive radius");
+    out.push_back({Vec3(x, y, z), Vec3::Zero(), Vec3::Zero(), r, mat});
+  }
+}
+
+Region region_of(const ParticleSourceParams& s, int dim) {
+  Region reg;
+  reg.dimension = dim;
+  reg.polygon = s.polygon;
+  reg.box_min = s.box_min;
+  reg.box_max = s.box_max;
+  return reg;
+}
+
+std::vector<Placed> place_particles(const DemScenario& sc, unsigned seed) {
+  std::vector<Placed> out;
+  const int dim = sc.run.dimension;
+  int index = 0;
+  for (const auto& s : sc.sources) {
+    const std::string where = "[[particles]] #" + std::to_string(index++);
+    const int mat = s.kind == SourceKind::List ? -1 : material_of(sc, s.material, where);
+    std::vector<PackedParticle> packed;
+    switch (s.kind) {
+      case SourceKind::List:
+        for (const auto& q : s.particles)
+          out.push_back({q.position, q.velocity, q.angular_velocity, q.radius,
+                         material_of(sc, q.material, where)});
+        break;
+      case SourceKind::Lattice:
+        lattice(s, dim, mat, out);
+        break;
+      case SourceKind::File:
+        from_file(s, mat, out);
+        break;
+      case SourceKind::RandomFill:
+        packed = random_fill(region_of(s, dim), s.radius_min, s.radius_max, s.porosity, s.count,
+                             seed + index);
+        break;
+      case SourceKind::Grow:
+        packed = grow_packing(region_of(s, dim), s.radius_min, s.radius_max, s.packing_fraction,
+                              s.count.value_or(1000), seed + index)
+                     .particles;
+        break;
+    }
+    if (s.shrink > 0.0) shrink_radii(packed, s.shrink);
+    for (const auto& q : packed) out.push_back({q.position, Vec3::Zero(), Vec3::Zero(), q.radius, mat});
+  }
+  return out;
+}
+
+template <int D>
+void check_inside(const DemScenario& sc, const DemSystem<D>& s) {
+  if (!s.has_domain()) return;
+  const auto& p = s.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3 x = Space<D>::to3(p.x[i]);
+    for (int d = 0; d < D; ++d)
+      if (x[d] < sc.run.domain_min[d] || x[d] > sc.run.domain_max[d])
+        throw InputError("[run] 'domain': particle " + std::to_string(p.id[i]) + " at (" +
+                         std::to_string(x.x()) + ", " + std::to_string(x.y()) + ", " +
+                         std::to_string(x.z()) + ") lies outside the domain");
+  }
+}
+
+// Settles packings under gravity with the real contact law until the kinetic
+// energy is a small fraction of m g d (Kuen: "until the kinetic energy is negligible").
+template <int D>
+double settle(DemRun<D>& run, const SettleParams& sp) {
+  auto& s = run.system;
+  const auto& p = s.particles;
+  double m_total = 0.0, d_mean = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    m_total += p.m[i];
+    d_mean += 2.0 * p.r[i];
+  }
+  d_mean /= std::max<std::size_t>(1, p.size());
+  const double threshold = sp.ke_ratio * m_total * s.gravity.norm() * d_mean;
+  const int64_t chunk = std::max<int64_t>(1, static_cast<int64_t>(1e-3 / s.dt));
+  run.stepper->prime();
+  while (s.time < sp.max_time) {
+    run.stepper->advance(chunk);
+    if (kinetic_energy(p) < threshold && s.time > 0.05) break;
+  }
+  return s.time;
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& opt) {
+  auto run = std::make_unique<DemRun<D>>();
+  auto& s = run->system;
+  s.materials = sc.materials;
+  s.contact = sc.contact;
+  s.gravity = Space<D>::from3(sc.run.gravity);
+  s.domain_min = sc.run.domain_min;
+  s.domain_max = sc.run.domain_max;
+  s.threads = std::max(1, opt.threads);
+  for (const auto& w : sc.walls)
+    s.walls.push_back(geometry::make_wall(w, material_of(sc, w.material, "[[walls]] '" + w.name + "'"),
+                                          D));
+
+  int64_t id = 0;
+  double r_max = 0.0, v_max = 0.0;
+  for (const Placed& q : place_particles(sc, sc.run.seed)) {
+    const MaterialParams& m = sc.materials[q.material];
+    if (!(q.r > 0.0)) throw InputError("[[particles]]: radius must be positive");
+    s.particles.add(Space<D>::from3(q.x), Space<D>::from3(q.v), Space<D>::rot_from3(q.w), q.r,
+                    m.density, q.material, id++);
+    r_max = std::max(r_max, q.r);
+    v_max = std::max(v_max, q.v.norm() + q.w.norm() * q.r);
+  }
+  check_inside(sc, s);
+  s.skin = sc.run.skin > 0.0 ? sc.run.skin : 0.2 * r_max;
+
+  run->stepper = make_stepper<D>(s);
+  // Hertz laws need an impact speed: the fastest initial particle or a fall
+  // through the domain height, at least 1 m/s.
+  const double height = s.has_domain() ? (sc.run.domain_max - sc.run.domain_min).maxCoeff() : 1.0;
+  run->reference_speed =
+      std::max({1.0, 2.0 * v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
+  run->critical_time_step = run->stepper->critical_time_step(run->reference_speed);
+  if (sc.run.time_step > 0.0) {
+    if (sc.run.time_step > run->critical_time_step)
+      throw InputError("[run] 'time_step': " + std::to_string(sc.run.time_step) +
+                       " s is above the critical time step " +
+                       std::to_string(run->critical_time_step) +
+                       " s of the stiffest contact and lightest particle; use at most " +
+                       std::to_string(sc.run.safety_factor * run->critical_time_step) + " s");
+    s.dt = sc.run.time_step;
+  } else {
+    s.dt = sc.run.safety_factor * run->critical_time_step;
+  }
+
+  bool settle_needed = false;
+  SettleParams sp;
+  for (const auto& src : sc.sources)
+    if (src.settle.enabled) {
+      settle_needed = true;
+      sp = src.settle;
+    }
+  if (settle_needed && opt.settle) {
+    run->settle_time = settle(*run, sp);
+    s.time = 0.0;
+    s.step = 0;
+    for (auto& v : s.particles.v) v.setZero();
+    for (auto& w : s.particles.w) w = Space<D>::rot_zero();
+    for (auto& w : s.walls) w.impulse.setZero();
+  }
+  return run;
+}
+
+template std::unique_ptr<DemRun<2>> build_dem<2>(const DemScenario&, const BuildOptions&);
+template std::unique_ptr<DemRun<3>> build_dem<3>(const DemScenario&, const BuildOptions&);
+
+}  // namespace talus::dem

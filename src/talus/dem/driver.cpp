@@ -1,0 +1,138 @@
+#include "talus/dem/driver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "talus/core/error.hpp"
+
+namespace talus::dem {
+
+RunControl make_run_control(const DemScenario& sc, double dt) {
+  RunControl c;
+  c.duration = sc.run.duration;
+  auto steps = [dt](double interval, int64_t fallback) {
+    return interval > 0.0 ? std::max<int64_t>(1, std::llround(interval / dt)) : fallback;
+  };
+  c.series_every = steps(sc.output.series_interval, 100);
+  c.snapshot_every = sc.output.write_snapshots ? steps(sc.output.snapshot_interval, 0) : -1;
+  c.checkpoint_every = steps(sc.output.checkpoint_interval, 0);
+  c.ke_blowup_factor = sc.run.ke_blowup_factor;
+  return c;
+}
+
+namespace {
+
+// Energy the particles could at most turn into motion: their kinetic energy
+// plus their potential energy above the lowest particle or wall point.
+template <int D>
+double available_energy(const DemSystem<D>& s) {
+  const auto& p = s.particles;
+  const double g = s.gravity.norm();
+  double floor = std::numeric_limits<double>::max(), ke = 0.0, m = 0.0, dmean = 0.0;
+  if (g > 0.0) {
+    const auto down = (s.gravity / g).eval();
+    for (std::size_t i = 0; i < p.size(); ++i) floor = std::min(floor, -down.dot(p.x[i]) - p.r[i]);
+    for (const auto& w : s.walls) {
+      Vec3 lo, hi;
+      w.bounds(lo, hi);
+      for (const Vec3& c : {lo, hi}) {
+        const double h = -down.dot(Space<D>::from3(c));
+        if (std::isfinite(h)) floor = std::min(floor, h);
+      }
+    }
+  }
+  double pe = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ke += 0.5 * p.m[i] * p.v[i].squaredNorm() + 0.5 / p.inv_I[i] * Space<D>::rot_dot(p.w[i], p.w[i]);
+    m += p.m[i];
+    dmean += 2.0 * p.r[i];
+    if (g > 0.0) pe += p.m[i] * (-(s.gravity / g).dot(p.x[i]) - floor) * g;
+  }
+  dmean /= std::max<std::size_t>(1, p.size());
+  // Never below the energy of the whole mass moving at 1 m/s or lifted by one diameter.
+  return std::max({ke + pe, 0.5 * m, m * g * dmean});
+}
+
+template <int D>
+void check_health(const DemRun<D>& run, double e_avail, double factor) {
+  const auto& s = run.system;
+  const double ke = kinetic_energy(s.particles);
+  if (!std::isfinite(ke)) {
+    for (std::size_t i = 0; i < s.particles.size(); ++i)
+      if (!s.particles.v[i].allFinite())
+        throw RunError("t = " + std::to_string(s.time) + " s: particle " +
+                       std::to_string(s.particles.id[i]) +
+                       " has a non-finite velocity. Check the time step (critical " +
+                       std::to_string(run.critical_time_step) + " s) and the material constants");
+    throw RunError("t = " + std::to_string(s.time) + " s: kinetic energy is not finite");
+  }
+  bool walls_move = false;
+  for (const auto& w : s.walls) walls_move = walls_move || w.moves();
+  if (factor > 0.0 && !walls_move && ke > factor * e_avail)
+    throw RunError("t = " + std::to_string(s.time) + " s: kinetic energy " + std::to_string(ke) +
+                   " J exceeds " + std::to_string(factor) + " times the energy available at the start (" +
+                   std::to_string(e_avail) +
+                   " J): the run is unstable. Reduce the time step (now " + std::to_string(s.dt) +
+                   " s, critical " + std::to_string(run.critical_time_step) + " s)");
+}
+
+int64_t next_multiple(int64_t step, int64_t every) {
+  return every > 0 ? (step / every + 1) * every : std::numeric_limits<int64_t>::max();
+}
+
+}  // namespace
+
+template <int D>
+RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObserver<D>*>& obs,
+                 bool fresh) {
+  auto& s = run.system;
+  const int64_t end = std::llround(c.duration / s.dt);
+  const double e_avail = available_energy(s);
+  if (fresh) {
+    run.stepper->prime();
+    for (auto* o : obs) o->on_series(run);
+    if (c.snapshot_every >= 0)
+      for (auto* o : obs) o->on_snapshot(run);
+  } else {
+    run.stepper->resume();
+  }
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  auto last_progress = t0;
+  const int64_t start = s.step;
+  const int64_t health_every = std::max<int64_t>(1, std::min<int64_t>(1000, end / 100 + 1));
+  while (s.step < end) {
+    const int64_t next = std::min({end, next_multiple(s.step, c.series_every),
+                                   next_multiple(s.step, c.snapshot_every),
+                                   next_multiple(s.step, c.checkpoint_every),
+                                   next_multiple(s.step, health_every)});
+    run.stepper->advance(next - s.step);
+    check_health(run, e_avail, c.ke_blowup_factor);
+    const bool last = s.step == end;
+    if (s.step % c.series_every == 0 || last)
+      for (auto* o : obs) o->on_series(run);
+    if (c.snapshot_every >= 0 && ((c.snapshot_every > 0 && s.step % c.snapshot_every == 0) || last))
+      for (auto* o : obs) o->on_snapshot(run);
+    if (c.checkpoint_every > 0 && s.step % c.checkpoint_every == 0 && !last)
+      for (auto* o : obs) o->on_checkpoint(run);
+    const auto now = clock::now();
+    if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_seconds || last) {
+      const double secs = std::chrono::duration<double>(now - t0).count();
+      for (auto* o : obs)
+        o->on_progress(s.time, end * s.dt, secs > 0 ? (s.step - start) / secs : 0.0);
+      last_progress = now;
+    }
+  }
+  RunStats st;
+  st.steps = s.step - start;
+  st.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  return st;
+}
+
+template RunStats run_dem<2>(DemRun<2>&, const RunControl&, const std::vector<DemObserver<2>*>&, bool);
+template RunStats run_dem<3>(DemRun<3>&, const RunControl&, const std::vector<DemObserver<3>*>&, bool);
+
+}  // namespace talus::dem

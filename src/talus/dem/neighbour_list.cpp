@@ -1,0 +1,215 @@
+#include "talus/dem/neighbour_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "talus/core/error.hpp"
+
+namespace talus::dem {
+
+namespace {
+bool is_zero(const ContactHistory<2>& h) { return h.shear.isZero(0.0) && h.roll == 0.0; }
+bool is_zero(const ContactHistory<3>& h) { return h.shear.isZero(0.0) && h.roll.isZero(0.0); }
+}  // namespace
+
+template <int D>
+void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primitive>& prims,
+                             double skin) {
+  skin_ = skin;
+  // Remember the history of touching contacts by particle id before re-sorting.
+  old_pairs_.clear();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (is_zero(pair_history[k])) continue;
+    const int64_t a = p.id[pairs[k].i], b = p.id[pairs[k].j];
+    ContactHistory<D> h = pair_history[k];
+    if (a > b) {  // stored as seen from the particle with the smaller id
+      h.shear = -h.shear;
+      h.roll = -h.roll;
+    }
+    old_pairs_.push_back({{std::min(a, b), std::max(a, b)}, h});
+  }
+  old_walls_.clear();
+  for (std::size_t i = 0; i + 1 < wall_start.size() && i < p.size(); ++i)
+    for (int k = wall_start[i]; k < wall_start[i + 1]; ++k)
+      if (!is_zero(wall_history[k])) old_walls_.push_back({{p.id[i], wall_prim[k]}, wall_history[k]});
+  std::sort(old_pairs_.begin(), old_pairs_.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::sort(old_walls_.begin(), old_walls_.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+
+  double r_max = 0.0;
+  for (double r : p.r) r_max = std::max(r_max, r);
+  const double cell = std::max(2.0 * r_max + skin, 1e-12);
+  sort_into_cells(p, cell);
+  find_pairs(p, cell);
+  find_walls(p, prims);
+  carry_history(p);
+  build_incidence(static_cast<int>(p.size()));
+  x_ref_ = p.x;
+  ++builds;
+}
+
+template <int D>
+void NeighbourList<D>::sort_into_cells(Particles<D>& p, double cell) {
+  const int n = static_cast<int>(p.size());
+  Vec lo = Vec::Constant(std::numeric_limits<double>::max());
+  Vec hi = Vec::Constant(std::numeric_limits<double>::lowest());
+  for (int i = 0; i < n; ++i) {
+    if (!p.x[i].allFinite())
+      throw RunError("particle " + std::to_string(p.id[i]) +
+                     " has a non-finite position: the run became unstable");
+    lo = lo.cwiseMin(p.x[i]);
+    hi = hi.cwiseMax(p.x[i]);
+  }
+  if (n == 0) lo = hi = Vec::Zero();
+  // Keep the grid bounded for sparse systems: at most ~8 cells per particle.
+  double h = cell;
+  for (;;) {
+    double cells = 1.0;
+    for (int d = 0; d < D; ++d) cells *= std::floor((hi[d] - lo[d]) / h) + 1.0;
+    if (cells <= 8.0 * n + 64.0) break;
+    h *= 1.26;
+  }
+  lo_ = lo;
+  std::size_t total = 1;
+  for (int d = 0; d < 3; ++d) {
+    dims_[d] = d < D ? static_cast<int>(std::floor((hi[d] - lo[d]) / h)) + 1 : 1;
+    total *= dims_[d];
+  }
+  std::vector<int> cell_of(n);
+  cell_start_.assign(total + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    int c = 0;
+    for (int d = D - 1; d >= 0; --d)
+      c = c * dims_[d] + std::min(dims_[d] - 1, static_cast<int>((p.x[i][d] - lo[d]) / h));
+    cell_of[i] = c;
+    ++cell_start_[c + 1];
+  }
+  for (std::size_t c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
+  std::vector<int> order(n), fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (int i = 0; i < n; ++i) order[fill[cell_of[i]]++] = i;
+  p.permute(order);
+  cell_size_ = h;
+}
+
+template <int D>
+void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
+  // Half stencil: each pair of neighbouring cells is visited once.
+  std::vector<std::array<int, 3>> stencil;
+  for (int dz = (D == 3 ? -1 : 0); dz <= (D == 3 ? 1 : 0); ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::array<int, 3> s{dx, dy, dz};
+        // Keep offsets that are lexicographically positive (z, y, x) or zero.
+        const bool positive = dz > 0 || (dz == 0 && (dy > 0 || (dy == 0 && dx >= 0)));
+        if (positive) stencil.push_back(s);
+      }
+  const int n = static_cast<int>(p.size());
+  const double h = cell_size_;
+  pairs.clear();
+  for (int cz = 0; cz < dims_[2]; ++cz)
+    for (int cy = 0; cy < dims_[1]; ++cy)
+      for (int cx = 0; cx < dims_[0]; ++cx) {
+        const int c = (cz * dims_[1] + cy) * dims_[0] + cx;
+        for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
+          for (const auto& s : stencil) {
+            const int nx = cx + s[0], ny = cy + s[1], nz = cz + s[2];
+            if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2])
+              continue;
+            const int nc = (nz * dims_[1] + ny) * dims_[0] + nx;
+            const int j0 = nc == c ? i + 1 : cell_start_[nc];
+            for (int j = j0; j < cell_start_[nc + 1]; ++j) {
+              const double cut = p.r[i] + p.r[j] + skin_;
+              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) pairs.push_back({i, j});
+            }
+          }
+        }
+      }
+  (void)n;
+  (void)h;
+}
+
+template <int D>
+void NeighbourList<D>::find_walls(const Particles<D>& p,
+                                  const std::vector<geometry::Primitive>& prims) {
+  const int n = static_cast<int>(p.size());
+  wall_start.assign(n + 1, 0);
+  wall_prim.clear();
+  std::vector<Vec3> lo(prims.size()), hi(prims.size());
+  for (std::size_t k = 0; k < prims.size(); ++k) geometry::bounds(prims[k], lo[k], hi[k]);
+  for (int i = 0; i < n; ++i) {
+    const double cut = p.r[i] + skin_;
+    const Vec3 x = Space<D>::to3(p.x[i]);
+    for (std::size_t k = 0; k < prims.size(); ++k) {
+      bool outside = false;
+      for (int d = 0; d < D; ++d)
+        outside = outside || x[d] < lo[k][d] - cut || x[d] > hi[k][d] + cut;
+      if (outside) continue;
+      geometry::Closest<D> c;
+      if (geometry::closest_point<D>(prims[k], p.x[i], cut, c))
+        wall_prim.push_back(static_cast<int>(k));
+    }
+    wall_start[i + 1] = static_cast<int>(wall_prim.size());
+  }
+}
+
+template <int D>
+void NeighbourList<D>::carry_history(const Particles<D>& p) {
+  pair_history.assign(pairs.size(), ContactHistory<D>{});
+  if (!old_pairs_.empty())
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const int64_t a = p.id[pairs[k].i], b = p.id[pairs[k].j];
+      const PairKey key{std::min(a, b), std::max(a, b)};
+      auto it = std::lower_bound(old_pairs_.begin(), old_pairs_.end(), key,
+                                 [](const auto& e, const PairKey& k2) { return e.first < k2; });
+      if (it != old_pairs_.end() && it->first == key) {
+        pair_history[k] = it->second;
+        if (a > b) {
+          pair_history[k].shear = -pair_history[k].shear;
+          pair_history[k].roll = -pair_history[k].roll;
+        }
+      }
+    }
+  wall_history.assign(wall_prim.size(), ContactHistory<D>{});
+  if (!old_walls_.empty())
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (int k = wall_start[i]; k < wall_start[i + 1]; ++k) {
+        const PairKey key{p.id[i], wall_prim[k]};
+        auto it = std::lower_bound(old_walls_.begin(), old_walls_.end(), key,
+                                   [](const auto& e, const PairKey& k2) { return e.first < k2; });
+        if (it != old_walls_.end() && it->first == key) wall_history[k] = it->second;
+      }
+}
+
+template <int D>
+void NeighbourList<D>::build_incidence(int n) {
+  incidence_start.assign(n + 1, 0);
+  for (const Pair& q : pairs) {
+    ++incidence_start[q.i + 1];
+    ++incidence_start[q.j + 1];
+  }
+  for (int i = 0; i < n; ++i) incidence_start[i + 1] += incidence_start[i];
+  incidence.resize(2 * pairs.size());
+  std::vector<int> fill(incidence_start.begin(), incidence_start.end() - 1);
+  // Pair index k is stored as 2k (particle is i) or 2k+1 (particle is j), in pair order.
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    incidence[fill[pairs[k].i]++] = static_cast<int>(2 * k);
+    incidence[fill[pairs[k].j]++] = static_cast<int>(2 * k + 1);
+  }
+}
+
+template <int D>
+bool NeighbourList<D>::stale(const Particles<D>& p, double wall_motion) const {
+  if (x_ref_.size() != p.size()) return true;
+  const double limit = 0.25 * skin_ * skin_;
+  if (wall_motion * wall_motion > limit) return true;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!((p.x[i] - x_ref_[i]).squaredNorm() <= limit)) return true;  // also catches NaN
+  return false;
+}
+
+template class NeighbourList<2>;
+template class NeighbourList<3>;
+
+}  // namespace talus::dem

@@ -1,0 +1,69 @@
+#pragma once
+// Verlet neighbour list with a skin, built from a linked-cell grid. Each build
+// also re-sorts the particles by cell, so neighbours sit close in memory, and
+// carries the contact history over to the new list by particle id.
+#include <cstdint>
+#include <vector>
+
+#include "talus/dem/contact/kinematics.hpp"
+#include "talus/dem/particles.hpp"
+#include "talus/geometry/primitive.hpp"
+
+namespace talus::dem {
+
+template <int D>
+class NeighbourList {
+ public:
+  using Vec = typename Space<D>::Vec;
+  struct Pair {
+    int i, j;
+  };
+
+  // Particle pairs closer than r_i + r_j + skin; pair_history is parallel to pairs.
+  std::vector<Pair> pairs;
+  std::vector<ContactHistory<D>> pair_history;
+  // Per particle (CSR): wall primitives closer than r + skin, with their history.
+  std::vector<int> wall_start, wall_prim;
+  std::vector<ContactHistory<D>> wall_history;
+  // Per particle (CSR): the pairs it belongs to, in pair order (race-free gather).
+  std::vector<int> incidence_start, incidence;
+
+  int builds = 0;
+
+  // Rebuilds the lists; permutes `p` into cell order (history follows by id).
+  void build(Particles<D>& p, const std::vector<geometry::Primitive>& prims, double skin);
+
+  // True when some particle moved more than skin/2 since the last build, or a
+  // wall moved more than that.
+  bool stale(const Particles<D>& p, double wall_motion) const;
+
+  double skin() const { return skin_; }
+  // Checkpoint support: the reference positions of the last build, and the
+  // incidence table recomputed from restored pairs.
+  std::vector<Vec>& reference_positions() { return x_ref_; }
+  void set_skin(double skin) { skin_ = skin; }
+  void restore_incidence(int n) { build_incidence(n); }
+
+ private:
+  void sort_into_cells(Particles<D>& p, double cell);
+  void find_pairs(const Particles<D>& p, double cell);
+  void find_walls(const Particles<D>& p, const std::vector<geometry::Primitive>& prims);
+  void carry_history(const Particles<D>& p);
+  void build_incidence(int n);
+
+  struct PairKey {
+    int64_t a, b;
+    bool operator<(const PairKey& o) const { return a < o.a || (a == o.a && b < o.b); }
+    bool operator==(const PairKey& o) const { return a == o.a && b == o.b; }
+  };
+  std::vector<std::pair<PairKey, ContactHistory<D>>> old_pairs_, old_walls_;
+
+  std::vector<Vec> x_ref_;
+  double skin_ = 0.0;
+  double cell_size_ = 0.0;
+  Vec lo_;
+  int dims_[3] = {1, 1, 1};
+  std::vector<int> cell_start_;
+};
+
+}  // namespace talus::dem

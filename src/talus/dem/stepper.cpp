@@ -1,0 +1,437 @@
+#include "talus/dem/stepper.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/dem/contact/hertz_mindlin.hpp"
+#include "talus/dem/contact/linear.hpp"
+#include "talus/dem/contact/rolling.hpp"
+#include "talus/dem/kuen_rolling.hpp"
+
+namespace talus::dem {
+
+namespace {
+
+// Forces of one particle pair, kept per pair when threads gather them.
+template <int D>
+struct PairResult {
+  typename Space<D>::Vec f;
+  typename Space<D>::Rot ti, tj;
+  bool touching;
+};
+
+template <int D, class Model>
+class Stepper final : public StepperBase<D> {
+ public:
+  using Vec = typename Space<D>::Vec;
+  using Rot = typename Space<D>::Rot;
+
+  explicit Stepper(DemSystem<D>& s) : s_(s) {
+    const int m = static_cast<int>(s.materials.size());
+    n_materials_ = m;
+    coeffs_.resize(m * m);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b)
+        coeffs_[a * m + b] = Model::make(s.contact, s.materials[a], s.materials[b]);
+    kuen_ = KuenRolling(s.contact, s.gravity.norm());
+  }
+
+  const char* model_name() const override { return "dem"; }
+
+  void prime() override {
+    update_walls(true);
+    rebuild();
+    compute_forces();
+  }
+
+  void resume() override {
+    update_walls(true);
+    s_.neighbours.restore_incidence(static_cast<int>(s_.particles.size()));
+  }
+
+  void rebuild() override {
+    remove_escaped();
+    s_.neighbours.build(s_.particles, s_.primitives, s_.skin);
+    s_.wall_motion_at_build = wall_displacement();
+  }
+
+  void advance(int64_t steps) override {
+    for (int64_t k = 0; k < steps; ++k) one_step();
+  }
+
+  double critical_time_step(double v_ref) const override {
+    const auto& p = s_.particles;
+    // The lightest and the smallest particle of each material bound the step.
+    double best = 1e300;
+    std::vector<double> m_min(n_materials_, 1e300), r_min(n_materials_, 1e300);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      m_min[p.material[i]] = std::min(m_min[p.material[i]], p.m[i]);
+      r_min[p.material[i]] = std::min(r_min[p.material[i]], p.r[i]);
+    }
+    std::vector<bool> wall_material(n_materials_, false);
+    for (const auto& w : s_.walls) wall_material[w.material] = true;
+    for (int a = 0; a < n_materials_; ++a) {
+      if (m_min[a] >= 1e300) continue;
+      for (int b = 0; b < n_materials_; ++b) {
+        const auto& c = coeffs_[a * n_materials_ + b];
+        if (m_min[b] < 1e300) {  // particle pair
+          const double me = m_min[a] * m_min[b] / (m_min[a] + m_min[b]);
+          const double re = r_min[a] * r_min[b] / (r_min[a] + r_min[b]);
+          best = std::min(best, Model::critical_time_step(c, me, re, v_ref));
+        }
+        if (wall_material[b])
+          best = std::min(best, Model::critical_time_step(c, m_min[a], r_min[a], v_ref));
+      }
+    }
+    return best;
+  }
+
+ private:
+  void one_step() {
+    auto& p = s_.particles;
+    const double dt = s_.dt;
+    const int n = static_cast<int>(p.size());
+    kick(0.5 * dt);
+#pragma omp parallel for schedule(static) num_threads(s_.threads) if (n > 4096)
+    for (int i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
+    s_.time = static_cast<double>(s_.step + 1) * dt;
+    const bool walls_changed = update_walls(false);
+    if (walls_changed ||
+        s_.neighbours.stale(p, (wall_displacement() - s_.wall_motion_at_build).cwiseAbs().maxCoeff()))
+      rebuild();
+    compute_forces();
+    kick(0.5 * dt);
+    kuen_.apply(p, dt);
+    if (s_.contact.lock_rotation)
+      for (auto& w : p.w) w = Space<D>::rot_zero();
+    for (auto& w : s_.walls) w.impulse += w.force * dt;
+    ++s_.step;
+  }
+
+  // Half kick of velocity Verlet, with PFC's optional local damping.
+  void kick(double h) {
+    auto& p = s_.particles;
+    const int n = static_cast<int>(p.size());
+    const Vec g = s_.gravity;
+    const double alpha = s_.contact.local_damping;
+#pragma omp parallel for schedule(static) num_threads(s_.threads) if (n > 4096)
+    for (int i = 0; i < n; ++i) {
+      Vec f = p.f[i] + p.m[i] * g;
+      Rot t = p.t[i];
+      if (alpha > 0.0) {
+        for (int d = 0; d < D; ++d) f[d] -= alpha * std::abs(f[d]) * sign(p.v[i][d]);
+        if constexpr (D == 2) {
+          t -= alpha * std::abs(t) * sign(p.w[i]);
+        } else {
+          for (int d = 0; d < 3; ++d) t[d] -= alpha * std::abs(t[d]) * sign(p.w[i][d]);
+        }
+      }
+      p.v[i] += (h * p.inv_m[i]) * f;
+      p.w[i] += (h * p.inv_I[i]) * t;
+    }
+  }
+  static double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
+
+  // Moves walls to the current time; true when a wall appeared or vanished.
+  bool update_walls(bool force) {
+    bool changed = false;
+    if (force || s_.primitives.empty()) {
+      s_.primitives.clear();
+      s_.primitive_wall.clear();
+      active_.clear();
+      for (std::size_t w = 0; w < s_.walls.size(); ++w) {
+        s_.walls[w].update(s_.time);
+        for (const auto& prim : s_.walls[w].current) {
+          s_.primitives.push_back(prim);
+          s_.primitive_wall.push_back(static_cast<int>(w));
+        }
+        active_.push_back(s_.walls[w].active(s_.time));
+      }
+      return true;
+    }
+    std::size_t k = 0;
+    for (std::size_t w = 0; w < s_.walls.size(); ++w) {
+      auto& wall = s_.walls[w];
+      const bool act = wall.active(s_.time);
+      if (act != active_[w]) {
+        active_[w] = act;
+        changed = true;
+      }
+      if (wall.moves()) {
+        wall.update(s_.time);
+        for (const auto& prim : wall.current) s_.primitives[k++] = prim;
+      } else {
+        k += wall.current.size();
+      }
+    }
+    return changed;
+  }
+
+  Vec3 wall_displacement() const {
+    // Largest displacement of any moving wall point, as a vector bound.
+    Vec3 m = Vec3::Zero();
+    for (const auto& w : s_.walls) {
+      if (!w.moves()) continue;
+      Vec3 lo, hi;
+      w.bounds(lo, hi);
+      (void)lo;
+      (void)hi;
+      m += w.displacement(s_.time).cwiseAbs();
+      if (w.motion.angular_velocity.squaredNorm() > 0.0) {
+        // A rotating wall: bound the motion of its farthest point.
+        double reach = 0.0;
+        for (const auto& prim : w.reference)
+          for (const Vec3& q : {prim.p0, prim.p1, prim.p2})
+            reach = std::max(reach, (q - w.motion.pivot).norm() + prim.radius);
+        m += Vec3::Constant(std::abs(w.rotation_angle(s_.time)) * reach);
+      }
+    }
+    return m;
+  }
+
+  void remove_escaped() {
+    auto& p = s_.particles;
+    if (!s_.has_domain()) return;
+    std::vector<int> keep;
+    keep.reserve(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec3 x = Space<D>::to3(p.x[i]);
+      bool inside = true;
+      for (int d = 0; d < D; ++d)
+        inside = inside && x[d] >= s_.domain_min[d] && x[d] <= s_.domain_max[d];
+      if (inside) keep.push_back(static_cast<int>(i));
+    }
+    if (keep.size() == p.size()) return;
+    s_.removed += static_cast<int64_t>(p.size() - keep.size());
+    // History travels by particle id; force a fresh pair table for the survivors.
+    auto& nl = s_.neighbours;
+    std::vector<int> new_index(p.size(), -1);
+    for (std::size_t k = 0; k < keep.size(); ++k) new_index[keep[k]] = static_cast<int>(k);
+    std::vector<typename NeighbourList<D>::Pair> pairs;
+    std::vector<ContactHistory<D>> hist;
+    for (std::size_t k = 0; k < nl.pairs.size(); ++k) {
+      const int a = new_index[nl.pairs[k].i], b = new_index[nl.pairs[k].j];
+      if (a < 0 || b < 0) continue;
+      pairs.push_back({a, b});
+      hist.push_back(nl.pair_history[k]);
+    }
+    nl.pairs.swap(pairs);
+    nl.pair_history.swap(hist);
+    std::vector<int> ws{0}, wp;
+    std::vector<ContactHistory<D>> wh;
+    for (int i : keep) {
+      for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
+        wp.push_back(nl.wall_prim[k]);
+        wh.push_back(nl.wall_history[k]);
+      }
+      ws.push_back(static_cast<int>(wp.size()));
+    }
+    nl.wall_start.swap(ws);
+    nl.wall_prim.swap(wp);
+    nl.wall_history.swap(wh);
+    p.permute(keep);
+  }
+
+  // Kinematics and force of pair k; false when the pair does not touch.
+  bool pair_force(std::size_t k, PairResult<D>& out) {
+    auto& p = s_.particles;
+    auto& nl = s_.neighbours;
+    const int i = nl.pairs[k].i, j = nl.pairs[k].j;
+    const Vec d = p.x[i] - p.x[j];
+    const double d2 = d.squaredNorm();
+    const double rs = p.r[i] + p.r[j];
+    if (d2 >= rs * rs) {
+      nl.pair_history[k] = ContactHistory<D>{};
+      return false;
+    }
+    const double dist = std::sqrt(d2);
+    ContactKinematics<D> kin;
+    kin.n = d / dist;
+    kin.overlap = rs - dist;
+    const double ci = p.r[i] - 0.5 * kin.overlap, cj = p.r[j] - 0.5 * kin.overlap;
+    kin.r_eff = p.r[i] * p.r[j] / rs;
+    kin.m_eff = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
+    if constexpr (Model::needs_inertia) {
+      const double ia = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
+      const double ib = 1.0 / p.inv_I[j] + p.m[j] * p.r[j] * p.r[j];
+      kin.inertia_eff = ia * ib / (ia + ib);
+    } else {
+      kin.inertia_eff = 0.0;
+    }
+    const Vec vrel = p.v[i] - p.v[j];
+    kin.vn = vrel.dot(kin.n);
+    const Rot warm = ci * p.w[i] + cj * p.w[j];
+    kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(warm, kin.n);
+    kin.w_rel = p.w[i] - p.w[j];
+    ContactForce<D> cf;
+    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], kin,
+                   nl.pair_history[k], s_.dt, cf);
+    out.f = cf.fn * kin.n + cf.ft;
+    const Rot tq = -Space<D>::cross(kin.n, cf.ft);
+    out.ti = ci * tq + cf.roll_torque;
+    out.tj = cj * tq - cf.roll_torque;
+    return true;
+  }
+
+  void compute_forces() {
+    auto& p = s_.particles;
+    auto& nl = s_.neighbours;
+    const int n = static_cast<int>(p.size());
+    for (int i = 0; i < n; ++i) {
+      p.f[i].setZero();
+      p.t[i] = Space<D>::rot_zero();
+      p.contacts[i] = 0;
+      p.wall_contacts[i] = 0;
+    }
+    const std::size_t np = nl.pairs.size();
+    int64_t touching = 0;
+    if (s_.threads <= 1) {
+      PairResult<D> r;
+      for (std::size_t k = 0; k < np; ++k) {
+        if (!pair_force(k, r)) continue;
+        const int i = nl.pairs[k].i, j = nl.pairs[k].j;
+        p.f[i] += r.f;
+        p.f[j] -= r.f;
+        p.t[i] += r.ti;
+        p.t[j] += r.tj;
+        ++p.contacts[i];
+        ++p.contacts[j];
+        ++touching;
+      }
+    } else {
+      // Race-free: forces per pair first, then each particle gathers its pairs
+      // in pair order, so the sums are the same as with one thread.
+      results_.resize(np);
+#pragma omp parallel num_threads(s_.threads)
+      {
+#pragma omp for schedule(static) reduction(+ : touching)
+        for (std::size_t k = 0; k < np; ++k) {
+          results_[k].touching = pair_force(k, results_[k]);
+          touching += results_[k].touching;
+        }
+#pragma omp for schedule(static)
+        for (int i = 0; i < n; ++i) {
+          for (int q = nl.incidence_start[i]; q < nl.incidence_start[i + 1]; ++q) {
+            const int e = nl.incidence[q];
+            const auto& r = results_[e >> 1];
+            if (!r.touching) continue;
+            if (e & 1) {
+              p.f[i] -= r.f;
+              p.t[i] += r.tj;
+            } else {
+              p.f[i] += r.f;
+              p.t[i] += r.ti;
+            }
+            ++p.contacts[i];
+          }
+        }
+      }
+    }
+    s_.pair_contacts = touching;
+    wall_forces();
+  }
+
+  void wall_forces() {
+    auto& p = s_.particles;
+    auto& nl = s_.neighbours;
+    const int n = static_cast<int>(p.size());
+    const int nw = static_cast<int>(s_.walls.size());
+    const int nt = std::max(1, s_.threads);
+    wall_acc_.assign(static_cast<std::size_t>(nt) * nw * 2, Vec3::Zero());
+    std::vector<Vec3> pivots(nw);
+    std::vector<bool> moving(nw);
+    for (int w = 0; w < nw; ++w) {
+      pivots[w] = s_.walls[w].pivot_at(s_.time);
+      moving[w] = s_.walls[w].moves();
+    }
+    int64_t touching = 0;
+#pragma omp parallel num_threads(nt) reduction(+ : touching)
+    {
+      Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * nw * 2;
+#pragma omp for schedule(static)
+      for (int i = 0; i < n; ++i) {
+        for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
+          const int prim = nl.wall_prim[k];
+          const int w = s_.primitive_wall[prim];
+          geometry::Closest<D> c;
+          if (!active_[w] ||
+              !geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) ||
+              c.distance >= p.r[i]) {
+            nl.wall_history[k] = ContactHistory<D>{};
+            continue;
+          }
+          ContactKinematics<D> kin;
+          kin.n = c.normal;
+          kin.overlap = p.r[i] - c.distance;
+          const double ci = p.r[i] - 0.5 * kin.overlap;
+          kin.r_eff = p.r[i];
+          kin.m_eff = p.m[i];
+          kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
+          Vec vrel = p.v[i];
+          if (moving[w])
+            vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
+          kin.vn = vrel.dot(kin.n);
+          kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
+          kin.w_rel = p.w[i];
+          ContactForce<D> cf;
+          Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
+                         nl.wall_history[k], s_.dt, cf);
+          const Vec f = cf.fn * kin.n + cf.ft;
+          p.f[i] += f;
+          p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
+          ++p.wall_contacts[i];
+          ++touching;
+          const Vec3 f3 = Space<D>::to3(f);
+          acc[2 * w] -= f3;
+          acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots[w]).cross(f3);
+        }
+      }
+    }
+    s_.wall_contacts = touching;
+    for (int w = 0; w < nw; ++w) {
+      s_.walls[w].force.setZero();
+      s_.walls[w].torque.setZero();
+      for (int t = 0; t < nt; ++t) {
+        s_.walls[w].force += wall_acc_[(static_cast<std::size_t>(t) * nw + w) * 2];
+        s_.walls[w].torque += wall_acc_[(static_cast<std::size_t>(t) * nw + w) * 2 + 1];
+      }
+    }
+  }
+
+  DemSystem<D>& s_;
+  int n_materials_ = 0;
+  std::vector<typename Model::Coeffs> coeffs_;
+  std::vector<PairResult<D>> results_;
+  std::vector<Vec3> wall_acc_;
+  std::vector<bool> active_;
+  KuenRolling kuen_;
+};
+
+template <int D, class Law>
+std::unique_ptr<StepperBase<D>> with_rolling(DemSystem<D>& s) {
+  if (s.contact.rolling == RollingModel::Epsd)
+    return std::make_unique<Stepper<D, ComposedContact<Law, EpsdRolling>>>(s);
+  return std::make_unique<Stepper<D, ComposedContact<Law, NoRolling>>>(s);
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<StepperBase<D>> make_stepper(DemSystem<D>& s) {
+  switch (s.contact.model) {
+    case ContactModel::Linear:
+      return with_rolling<D, LinearSpringDashpot>(s);
+    case ContactModel::HertzMindlin:
+      return with_rolling<D, HertzMindlin>(s);
+    case ContactModel::ViscoelasticHertz:
+      return with_rolling<D, ViscoelasticHertz>(s);
+  }
+  return nullptr;
+}
+
+template std::unique_ptr<StepperBase<2>> make_stepper<2>(DemSystem<2>&);
+template std::unique_ptr<StepperBase<3>> make_stepper<3>(DemSystem<3>&);
+
+}  // namespace talus::dem

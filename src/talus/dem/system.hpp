@@ -1,0 +1,56 @@
+#pragma once
+// The state of a DEM run: particles, walls, contact history, clock. Everything
+// a checkpoint must hold lives here; the stepper only adds caches.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "talus/dem/neighbour_list.hpp"
+#include "talus/dem/params.hpp"
+#include "talus/dem/particles.hpp"
+#include "talus/geometry/wall.hpp"
+
+namespace talus::dem {
+
+template <int D>
+struct DemSystem {
+  using Vec = typename Space<D>::Vec;
+
+  Particles<D> particles;
+  std::vector<geometry::Wall> walls;
+  std::vector<MaterialParams> materials;
+  ContactParams contact;
+
+  Vec gravity = Vec::Zero();
+  double dt = 0.0;
+  double time = 0.0;
+  int64_t step = 0;
+  Vec3 domain_min = Vec3::Zero(), domain_max = Vec3::Zero();  // empty box = no removal
+  double skin = 0.0;
+  int threads = 1;
+  int64_t removed = 0;  // particles that left the domain
+
+  // Flattened current wall primitives and the wall each belongs to.
+  std::vector<geometry::Primitive> primitives;
+  std::vector<int> primitive_wall;
+  NeighbourList<D> neighbours;
+  Vec3 wall_motion_at_build = Vec3::Zero();  // wall displacement bound at the last build
+
+  // Filled by every step.
+  int64_t pair_contacts = 0;
+  int64_t wall_contacts = 0;
+
+  bool has_domain() const { return (domain_max - domain_min).minCoeff() > 0.0; }
+  int material_index(const std::string& name) const;
+};
+
+// Energies and other global measures.
+template <int D>
+double kinetic_energy(const Particles<D>& p);
+template <int D>
+double rotational_energy(const Particles<D>& p);
+// Potential energy in gravity g relative to the origin: -sum m g.x
+template <int D>
+double potential_energy(const Particles<D>& p, const typename Space<D>::Vec& g);
+
+}  // namespace talus::dem
