@@ -1,0 +1,156 @@
+#include "commands.hpp"
+
+#include <fmt/core.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <toml++/toml.h>
+
+#include "talus/core/error.hpp"
+#include "talus/core/version.hpp"
+#include "talus/dem/builder.hpp"
+#include "talus/dem/checkpoint.hpp"
+#include "talus/dem/driver.hpp"
+#include "talus/dem/output_observer.hpp"
+#include "talus/io/scenario.hpp"
+#include "summary.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::app {
+
+std::string scenarios_folder() {
+  if (const char* env = std::getenv("TALUS_SCENARIOS")) return env;
+  return std::string(TALUS_SOURCE_DIR) + "/scenarios";
+}
+
+namespace {
+
+void progress_line(double t, double end, double sps, double dt) {
+  const double left = sps > 0 ? (end - t) / dt / sps : 0.0;
+  fmt::print(stderr, "\r  t = {:.4f} / {:.4f} s   {:.0f} steps/s   {:.0f} s left   ", t, end,
+             sps, left);
+  if (t >= end) fmt::print(stderr, "\n");
+  std::fflush(stderr);
+}
+
+// Refuses to write into a folder that already holds files, unless forced.
+void prepare_output(const fs::path& out, bool force) {
+  if (fs::exists(out) && !fs::is_directory(out))
+    throw InputError(out.string() + ": output path exists and is not a folder");
+  if (fs::exists(out) && !fs::is_empty(out)) {
+    if (!force)
+      throw InputError(out.string() +
+                       ": output folder exists and is not empty; use --force to overwrite it or "
+                       "--out to choose another");
+    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
+  }
+  fs::create_directories(out);
+}
+
+template <int D>
+int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunOptions& opt,
+                     bool resume) {
+  const auto t_setup = std::chrono::steady_clock::now();
+  auto run = dem::build_dem<D>(sc, {opt.threads, !resume});
+  if (resume) {
+    dem::load_checkpoint(run->system, dem::DemOutputs<D>::checkpoint_path(out));
+    run->system.threads = opt.threads;
+  }
+  const double setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_setup).count();
+  dem::DemOutputs<D> outputs(out, run->system, resume, run->system.time);
+  const bool show = !opt.quiet && isatty(STDERR_FILENO);
+  const double dt = run->system.dt;
+  if (show) outputs.progress = [dt](double t, double e, double s) { progress_line(t, e, s, dt); };
+  const auto control = dem::make_run_control(sc, dt);
+  RunSummary summary;
+  summary.output = out;
+  summary.setup_seconds = setup_s;
+  try {
+    const auto stats = dem::run_dem<D>(*run, control, {&outputs}, !resume);
+    summary.steps = stats.steps;
+    summary.loop_seconds = stats.wall_seconds;
+    write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
+  } catch (const RunError& e) {
+    write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());
+    throw;
+  }
+  if (!opt.quiet)
+    fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", summary.steps,
+               summary.loop_seconds, out.string());
+  return 0;
+}
+
+}  // namespace
+
+int run_command(const RunOptions& opt) {
+  omp_set_num_threads(opt.threads);
+  fs::path out;
+  std::string scenario_path;
+  const bool resume = !opt.resume.empty();
+  if (resume) {
+    out = opt.resume;
+    scenario_path = (out / "scenario.toml").string();
+    if (!fs::exists(dem::DemOutputs<3>::checkpoint_path(out)))
+      throw InputError(out.string() + ": no checkpoint.bin to resume from (set "
+                                      "output.checkpoint_interval to write checkpoints)");
+  } else {
+    if (opt.file.empty()) throw InputError("talus run: a scenario file is required");
+    scenario_path = opt.file;
+  }
+  const auto file = io::load_scenario_file(scenario_path, resume ? std::vector<std::string>{} : opt.sets);
+  const auto sc = io::parse_dem_scenario(file);
+  if (!resume) {
+    out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name) : fs::path(opt.out);
+    prepare_output(out, opt.force);
+    // The resolved scenario makes the run reproducible and resumable.
+    std::ofstream(out / "scenario.toml") << io::scenario_to_toml(sc);
+  }
+  return sc.run.dimension == 2 ? run_dem_scenario<2>(sc, out, opt, resume)
+                               : run_dem_scenario<3>(sc, out, opt, resume);
+}
+
+int validate_command(const ValidateOptions& opt) {
+  const auto file = io::load_scenario_file(opt.file, opt.sets);
+  const auto sc = io::parse_dem_scenario(file);
+  // Building places the particles and checks the time step, without settling.
+  double dt = 0, crit = 0;
+  std::size_t n = 0;
+  if (sc.run.dimension == 2) {
+    auto run = dem::build_dem<2>(sc, {1, false});
+    dt = run->system.dt, crit = run->critical_time_step, n = run->system.particles.size();
+  } else {
+    auto run = dem::build_dem<3>(sc, {1, false});
+    dt = run->system.dt, crit = run->critical_time_step, n = run->system.particles.size();
+  }
+  fmt::print("{}: valid ({}D DEM, {} particles, {} walls, time step {:.3g} s, critical {:.3g} s)\n",
+             opt.file, sc.run.dimension, n, sc.walls.size(), dt, crit);
+  return 0;
+}
+
+int list_command() {
+  const fs::path dir = scenarios_folder();
+  if (!fs::is_directory(dir)) throw InputError(dir.string() + ": scenarios folder not found");
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    std::string desc;
+    try {
+      const auto t = toml::parse_file(f.string());
+      desc = t["description"].value_or(std::string());
+    } catch (const std::exception&) {
+      desc = "(unreadable)";
+    }
+    fmt::print("{:<28} {}\n", f.stem().string(), desc);
+  }
+  return 0;
+}
+
+}  // namespace talus::app

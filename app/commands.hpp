@@ -1,0 +1,25 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace talus::app {
+
+struct RunOptions {
+  std::string file, out, resume;
+  std::vector<std::string> sets;
+  int threads = 1;
+  bool force = false, quiet = false;
+};
+struct ValidateOptions {
+  std::string file;
+  std::vector<std::string> sets;
+};
+
+int run_command(const RunOptions& options);
+int validate_command(const ValidateOptions& options);
+int list_command();
+
+// Folder of the bundled scenarios: $TALUS_SCENARIOS, else the source tree's.
+std::string scenarios_folder();
+
+}  // namespace talus::app

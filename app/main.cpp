@@ -1,0 +1,58 @@
+// talus command line: a thin layer over the library. Exit codes: 0 success,
+// 2 bad input (nothing ran), 1 failed run.
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "commands.hpp"
+#include "talus/core/error.hpp"
+#include "talus/core/version.hpp"
+
+int main(int argc, char** argv) {
+  using namespace talus::app;
+  CLI::App cli{"talus: granular flows and mass movements (DEM, depth-averaged runout, MPM)"};
+  cli.set_version_flag("--version", talus::version());
+  cli.require_subcommand(1);
+
+  RunOptions run;
+  auto* run_cmd = cli.add_subcommand("run", "run a scenario file (or resume an interrupted run)");
+  run_cmd->add_option("file", run.file, "scenario file (.toml)");
+  run_cmd->add_option("--out,-o", run.out, "output folder (default: runs/<scenario name>)");
+  run_cmd->add_option("--set", run.sets, "override a scenario value: key=value (repeatable)")
+      ->allow_extra_args(false);
+  run_cmd->add_option("--threads,-j", run.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this folder");
+  run_cmd->add_flag("--force", run.force, "write into an existing output folder");
+  run_cmd->add_flag("--quiet,-q", run.quiet, "no progress on stderr");
+
+  ValidateOptions val;
+  auto* val_cmd = cli.add_subcommand("validate", "check a scenario file without running it");
+  val_cmd->add_option("file", val.file, "scenario file")->required();
+  val_cmd->add_option("--set", val.sets, "override a scenario value: key=value");
+
+  auto* list_cmd = cli.add_subcommand("list", "list the bundled scenarios");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = cli.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  try {
+    if (run_cmd->parsed()) return run_command(run);
+    if (val_cmd->parsed()) return validate_command(val);
+    if (list_cmd->parsed()) return list_command();
+  } catch (const talus::InputError& e) {
+    fmt::print(stderr, "talus: error: {}\n", e.what());
+    return 2;
+  } catch (const talus::RunError& e) {
+    fmt::print(stderr, "talus: run failed: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "talus: run failed: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,81 @@
+#include "summary.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <limits>
+
+#include "talus/core/version.hpp"
+#include "talus/io/scenario.hpp"
+
+namespace talus::app {
+
+template <int D>
+void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
+                       const dem::DemOutputs<D>& outputs, const RunSummary& summary, int threads,
+                       const std::string& status, const std::string& error) {
+  using nlohmann::json;
+  const auto& s = run.system;
+  const auto& p = s.particles;
+  double front = -std::numeric_limits<double>::infinity();
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    front = std::max(front, p.x[i][0]);
+    top = std::max(top, p.x[i][D - 1]);
+  }
+  json walls = json::array();
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    const auto& wall = s.walls[w];
+    walls.push_back({{"name", wall.name},
+                     {"force_N", {wall.force.x(), wall.force.y(), wall.force.z()}},
+                     {"peak_force_N", outputs.peak_wall_force[w]},
+                     {"impulse_Ns", {wall.impulse.x(), wall.impulse.y(), wall.impulse.z()}}});
+  }
+  json j = {
+      {"talus_version", talus::version()},
+      {"status", status},
+      {"method", "dem"},
+      {"dimension", D},
+      {"scenario", io::scenario_to_json(sc)},
+      {"resolved",
+       {{"time_step_s", s.dt},
+        {"critical_time_step_s", run.critical_time_step},
+        {"reference_impact_speed_m_s", run.reference_speed},
+        {"skin_m", s.skin},
+        {"settle_time_s", run.settle_time},
+        {"threads", threads}}},
+      {"run",
+       {{"steps", summary.steps},
+        {"simulated_time_s", s.time},
+        {"loop_wall_s", summary.loop_seconds},
+        {"setup_wall_s", summary.setup_seconds},
+        {"particle_steps_per_s",
+         summary.loop_seconds > 0 ? p.size() * summary.steps / summary.loop_seconds : 0.0},
+        {"neighbour_builds", s.neighbours.builds}}},
+      {"metrics",
+       {{"particles", p.size()},
+        {"particles_removed", s.removed},
+        {"kinetic_energy_J", dem::kinetic_energy(p)},
+        {"rotational_energy_J", dem::rotational_energy(p)},
+        {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
+        {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
+        {"front_x_m", p.size() ? front : 0.0},
+        {"top_m", p.size() ? top : 0.0},
+        {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
+        {"walls", walls}}},
+  };
+  if (!error.empty()) j["error"] = error;
+  const auto path = summary.output / "summary.json";
+  const auto tmp = summary.output / "summary.json.tmp";
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  std::filesystem::rename(tmp, path);
+}
+
+template void write_dem_summary<2>(const dem::DemScenario&, const dem::DemRun<2>&,
+                                   const dem::DemOutputs<2>&, const RunSummary&, int,
+                                   const std::string&, const std::string&);
+template void write_dem_summary<3>(const dem::DemScenario&, const dem::DemRun<3>&,
+                                   const dem::DemOutputs<3>&, const RunSummary&, int,
+                                   const std::string&, const std::string&);
+
+}  // namespace talus::app

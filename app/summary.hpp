@@ -1,0 +1,23 @@
+#pragma once
+// summary.json: what ran, with which resolved parameters, how long it took and
+// the headline results.
+#include <filesystem>
+#include <string>
+
+#include "talus/dem/builder.hpp"
+#include "talus/dem/output_observer.hpp"
+
+namespace talus::app {
+
+struct RunSummary {
+  std::filesystem::path output;
+  int64_t steps = 0;
+  double loop_seconds = 0.0, setup_seconds = 0.0;
+};
+
+template <int D>
+void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
+                       const dem::DemOutputs<D>& outputs, const RunSummary& summary, int threads,
+                       const std::string& status, const std::string& error);
+
+}  // namespace talus::app

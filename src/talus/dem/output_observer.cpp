@@ -1,0 +1,191 @@
+#include "talus/dem/output_observer.hpp"
+
+#include <cmath>
+
+#include "talus/dem/checkpoint.hpp"
+
+namespace talus::dem {
+
+namespace {
+
+template <int D>
+std::vector<std::string> series_columns(const DemSystem<D>& s) {
+  std::vector<std::string> c = {"time",      "step",          "particles",     "kinetic_energy",
+                                "rotational_energy", "potential_energy", "pair_contacts",
+                                "wall_contacts", "removed"};
+  const char* axes = "xyz";
+  for (const auto& w : s.walls) {
+    for (int d = 0; d < D; ++d) c.push_back(w.name + "_f" + axes[d]);
+    for (int d = (D == 2 ? 2 : 0); d < 3; ++d) c.push_back(w.name + "_t" + axes[d]);
+    for (int d = 0; d < D; ++d) c.push_back(w.name + "_impulse_" + axes[d]);
+  }
+  return c;
+}
+
+void add_polyline(io::WallFrame& f, const std::vector<Vec3>& pts, int wall) {
+  const int base = static_cast<int>(f.points.size());
+  f.points.insert(f.points.end(), pts.begin(), pts.end());
+  for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+    f.lines.push_back({base + static_cast<int>(k), base + static_cast<int>(k) + 1});
+    f.line_wall.push_back(wall);
+  }
+}
+
+void add_triangle(io::WallFrame& f, const Vec3& a, const Vec3& b, const Vec3& c, int wall) {
+  const int base = static_cast<int>(f.points.size());
+  f.points.insert(f.points.end(), {a, b, c});
+  f.triangles.push_back({base, base + 1, base + 2});
+  f.triangle_wall.push_back(wall);
+}
+
+Vec3 any_perpendicular(const Vec3& n) {
+  const Vec3 t = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  return n.cross(t).normalized();
+}
+
+}  // namespace
+
+template <int D>
+io::WallFrame wall_frame(const DemSystem<D>& s, double extent) {
+  io::WallFrame f;
+  using geometry::PrimitiveKind;
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    if (!s.walls[w].active(s.time)) continue;
+    const int wi = static_cast<int>(w);
+    for (const auto& p : s.walls[w].current) {
+      switch (p.kind) {
+        case PrimitiveKind::Segment:
+          add_polyline(f, {p.p0, p.p1}, wi);
+          break;
+        case PrimitiveKind::Arc: {
+          std::vector<Vec3> pts;
+          const int n = 32;
+          for (int k = 0; k <= n; ++k) {
+            const double a = p.angle_start + (p.angle_end - p.angle_start) * k / n;
+            pts.push_back(p.p0 + p.radius * Vec3(std::cos(a), std::sin(a), 0.0));
+          }
+          add_polyline(f, pts, wi);
+          break;
+        }
+        case PrimitiveKind::Plane: {
+          if (D == 2) {
+            const Vec3 t(-p.n.y(), p.n.x(), 0.0);
+            add_polyline(f, {p.p0 - 0.5 * extent * t, p.p0 + 0.5 * extent * t}, wi);
+          } else {
+            const Vec3 u = any_perpendicular(p.n), v = p.n.cross(u);
+            const double h = 0.5 * extent;
+            const Vec3 a = p.p0 - h * u - h * v, b = p.p0 + h * u - h * v;
+            const Vec3 c = p.p0 + h * u + h * v, d = p.p0 - h * u + h * v;
+            add_triangle(f, a, b, c, wi);
+            add_triangle(f, a, c, d, wi);
+          }
+          break;
+        }
+        case PrimitiveKind::Triangle:
+          add_triangle(f, p.p0, p.p1, p.p2, wi);
+          break;
+        case PrimitiveKind::Cylinder: {
+          const Vec3 u = any_perpendicular(p.n), v = p.n.cross(u);
+          const double len = std::isfinite(p.length) ? p.length : extent;
+          const int n = 24;
+          for (int k = 0; k < n; ++k) {
+            const double a0 = 2 * M_PI * k / n, a1 = 2 * M_PI * (k + 1) / n;
+            const Vec3 r0 = p.radius * (std::cos(a0) * u + std::sin(a0) * v);
+            const Vec3 r1 = p.radius * (std::cos(a1) * u + std::sin(a1) * v);
+            const Vec3 top = len * p.n;
+            add_triangle(f, p.p0 + r0, p.p0 + r1, p.p0 + r1 + top, wi);
+            add_triangle(f, p.p0 + r0, p.p0 + r1 + top, p.p0 + r0 + top, wi);
+          }
+          break;
+        }
+      }
+    }
+  }
+  return f;
+}
+
+template <int D>
+DemOutputs<D>::DemOutputs(std::filesystem::path dir, const DemSystem<D>& s, bool resume,
+                          double resume_time)
+    : dir_(std::move(dir)) {
+  std::filesystem::create_directories(dir_);
+  const auto csv = dir_ / "series.csv";
+  if (resume) io::CsvSeries::truncate_after(csv, resume_time);
+  series_ = std::make_unique<io::CsvSeries>(csv, series_columns(s), resume);
+  particles_ = std::make_unique<io::PvdSeries>(dir_, "particles", resume);
+  walls_ = std::make_unique<io::PvdSeries>(dir_, "walls", resume);
+  if (resume) {
+    particles_->truncate_after(resume_time);
+    walls_->truncate_after(resume_time);
+  }
+  peak_wall_force.assign(s.walls.size(), 0.0);
+}
+
+template <int D>
+void DemOutputs<D>::on_series(const DemRun<D>& run) {
+  const auto& s = run.system;
+  const auto& p = s.particles;
+  const double ke = kinetic_energy(p);
+  std::vector<double> row = {s.time,
+                             static_cast<double>(s.step),
+                             static_cast<double>(p.size()),
+                             ke,
+                             rotational_energy(p),
+                             potential_energy(p, s.gravity),
+                             static_cast<double>(s.pair_contacts),
+                             static_cast<double>(s.wall_contacts),
+                             static_cast<double>(s.removed)};
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    const auto& wall = s.walls[w];
+    for (int d = 0; d < D; ++d) row.push_back(wall.force[d]);
+    for (int d = (D == 2 ? 2 : 0); d < 3; ++d) row.push_back(wall.torque[d]);
+    for (int d = 0; d < D; ++d) row.push_back(wall.impulse[d]);
+    peak_wall_force[w] = std::max(peak_wall_force[w], wall.force.norm());
+  }
+  if (ke > peak_kinetic_energy) {
+    peak_kinetic_energy = ke;
+    peak_kinetic_energy_time = s.time;
+  }
+  series_->row(row);
+}
+
+template <int D>
+void DemOutputs<D>::on_snapshot(const DemRun<D>& run) {
+  const auto& s = run.system;
+  const auto& p = s.particles;
+  io::ParticleFrame f;
+  const std::size_t n = p.size();
+  f.position.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f.position.push_back(Space<D>::to3(p.x[i]));
+    f.velocity.push_back(Space<D>::to3(p.v[i]));
+    f.angular_velocity.push_back(Space<D>::rot_to3(p.w[i]));
+    f.contacts.push_back(p.contacts[i] + p.wall_contacts[i]);
+  }
+  f.radius = p.r;
+  f.id = p.id;
+  f.material = p.material;
+  particles_->add(s.time, f);
+  double extent = 1.0;
+  if (s.has_domain()) extent = (s.domain_max - s.domain_min).maxCoeff();
+  walls_->add(s.time, wall_frame(s, extent));
+}
+
+template <int D>
+void DemOutputs<D>::on_checkpoint(const DemRun<D>& run) {
+  series_->flush();
+  save_checkpoint(run.system, checkpoint_path(dir_));
+}
+
+template <int D>
+void DemOutputs<D>::on_progress(double time, double end, double steps_per_s) {
+  series_->flush();
+  if (progress) progress(time, end, steps_per_s);
+}
+
+template class DemOutputs<2>;
+template class DemOutputs<3>;
+template io::WallFrame wall_frame<2>(const DemSystem<2>&, double);
+template io::WallFrame wall_frame<3>(const DemSystem<3>&, double);
+
+}  // namespace talus::dem

@@ -1,0 +1,52 @@
+#pragma once
+// Turns the state of a DEM run into the files of its output folder: the time
+// series (series.csv), ParaView snapshots (particles.pvd, walls.pvd) and
+// checkpoints. The solver knows nothing of files; the io writers know nothing
+// of physics; this observer sits between them.
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "talus/dem/driver.hpp"
+#include "talus/io/csv_writer.hpp"
+#include "talus/io/frame.hpp"
+#include "talus/io/vtk_writer.hpp"
+
+namespace talus::dem {
+
+template <int D>
+class DemOutputs final : public DemObserver<D> {
+ public:
+  // resume = true continues the files of an interrupted run, dropping what was
+  // written after the checkpoint at `resume_time`.
+  DemOutputs(std::filesystem::path dir, const DemSystem<D>& system, bool resume,
+             double resume_time);
+
+  void on_series(const DemRun<D>& run) override;
+  void on_snapshot(const DemRun<D>& run) override;
+  void on_checkpoint(const DemRun<D>& run) override;
+  void on_progress(double time, double end, double steps_per_s) override;
+
+  std::function<void(double, double, double)> progress;  // set by the app
+
+  // Peaks seen in the series, for the summary.
+  std::vector<double> peak_wall_force;  // |F| per wall
+  double peak_kinetic_energy = 0.0;
+  double peak_kinetic_energy_time = 0.0;
+
+  static std::filesystem::path checkpoint_path(const std::filesystem::path& dir) {
+    return dir / "checkpoint.bin";
+  }
+
+ private:
+  std::filesystem::path dir_;
+  std::unique_ptr<io::CsvSeries> series_;
+  std::unique_ptr<io::PvdSeries> particles_, walls_;
+};
+
+// Wall geometry as drawable lines and triangles at time t (planes as squares of
+// side `extent` around their point, arcs and cylinders as polylines/strips).
+template <int D>
+io::WallFrame wall_frame(const DemSystem<D>& system, double extent);
+
+}  // namespace talus::dem

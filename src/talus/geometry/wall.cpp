@@ -1,0 +1,249 @@
+#include "talus/geometry/wall.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/core/error.hpp"
+#include "talus/geometry/stl.hpp"
+
+namespace talus::geometry {
+
+namespace {
+
+// Time spent moving by t: translation and rotation run on [move_start, move_stop).
+double moving_time(const dem::WallMotionParams& m, double t) {
+  return std::clamp(t - m.move_start, 0.0, std::max(0.0, m.move_stop - m.move_start));
+}
+
+bool moving_at(const dem::WallMotionParams& m, double t) {
+  return t >= m.move_start && t < m.move_stop;
+}
+
+}  // namespace
+
+Vec3 Wall::displacement(double t) const {
+  Vec3 d = motion.velocity * moving_time(motion, t);
+  if (motion.amplitude != 0) {
+    d += motion.amplitude * std::sin(2 * M_PI * motion.frequency * t + motion.phase) *
+         motion.direction.normalized();
+  }
+  return d;
+}
+
+double Wall::rotation_angle(double t) const {
+  return motion.angular_velocity.norm() * moving_time(motion, t);
+}
+
+bool Wall::moves() const {
+  const bool translates = motion.velocity != Vec3::Zero() && motion.move_stop > motion.move_start;
+  const bool rotates =
+      motion.angular_velocity != Vec3::Zero() && motion.move_stop > motion.move_start;
+  return translates || rotates || motion.amplitude != 0;
+}
+
+void Wall::update(double t) {
+  if (!moves()) {
+    current = reference;
+    return;
+  }
+  const Vec3 pivot = motion.pivot - displacement(t);
+  const Vec3 shift = displacement(t);
+  const double omega = motion.angular_velocity.norm();
+  const Eigen::Matrix3d rot =
+      omega > 0 ? Eigen::AngleAxisd(rotation_angle(t), motion.angular_velocity / omega).matrix()
+                : Eigen::Matrix3d::Identity();
+  // Arcs live in the xy plane, where rotations are about z (make_wall checks).
+  const double arc_turn = motion.angular_velocity.z() * moving_time(motion, t);
+  auto place = [&](const Vec3& x) -> Vec3 { return pivot + shift + rot * (x - pivot); };
+  current.resize(reference.size());
+  for (std::size_t i = 0; i < reference.size(); ++i) {
+    const Primitive& ref = reference[i];
+    Primitive& cur = current[i];
+    cur = ref;
+    cur.p0 = place(ref.p0);
+    cur.p1 = place(ref.p1);
+    cur.p2 = place(ref.p2);
+    cur.n = rot * ref.n;
+    if (ref.kind == PrimitiveKind::Arc) {
+      cur.angle_start = ref.angle_start + arc_turn;
+      cur.angle_end = ref.angle_end + arc_turn;
+    }
+  }
+}
+
+Vec3 Wall::velocity_at(const Vec3& point, double t) const {
+  Vec3 v = Vec3::Zero();
+  if (moving_at(motion, t)) {
+    v += motion.velocity + motion.angular_velocity.cross(point - pivot_at(t));
+  }
+  if (motion.amplitude != 0) {
+    const double w = 2 * M_PI * motion.frequency;
+    v += motion.amplitude * w * std::cos(w * t + motion.phase) * motion.direction.normalized();
+  }
+  return v;
+}
+
+void Wall::bounds(Vec3& lo, Vec3& hi) const {
+  lo = Vec3::Constant(kInf);
+  hi = Vec3::Constant(-kInf);
+  for (const Primitive& p : current) {
+    Vec3 plo, phi;
+    geometry::bounds(p, plo, phi);
+    lo = lo.cwiseMin(plo);
+    hi = hi.cwiseMax(phi);
+  }
+}
+
+namespace {
+
+[[noreturn]] void fail(const dem::WallParams& w, const std::string& what) {
+  throw InputError(fmt::format("wall '{}': {}", w.name, what));
+}
+
+// Relative tolerance for degenerate geometry, in units of the coordinates' size.
+constexpr double kDegenerate = 1e-12;
+
+Vec3 unit(const dem::WallParams& w, const Vec3& v, const char* key) {
+  const double len = v.norm();
+  if (!(len > 0) || !std::isfinite(len)) fail(w, fmt::format("{} must be a non-zero vector", key));
+  return v / len;
+}
+
+Primitive segment(const dem::WallParams& w) {
+  const double scale = std::max({1.0, w.a.norm(), w.b.norm()});
+  if ((w.b - w.a).norm() <= kDegenerate * scale) fail(w, "segment end points a and b coincide");
+  Primitive p;
+  p.kind = PrimitiveKind::Segment;
+  p.p0 = w.a;
+  p.p1 = w.b;
+  return p;
+}
+
+Primitive arc(const dem::WallParams& w) {
+  if (!(w.radius > 0)) fail(w, "radius must be positive");
+  if (!(w.angle_end > w.angle_start) || !std::isfinite(w.angle_end - w.angle_start))
+    fail(w, "angle_end must be greater than angle_start");
+  Primitive p;
+  p.kind = PrimitiveKind::Arc;
+  p.p0 = w.center;
+  p.radius = w.radius;
+  p.angle_start = w.angle_start;
+  p.angle_end = w.angle_end;
+  return p;
+}
+
+Primitive plane(const dem::WallParams& w, int dimension) {
+  Primitive p;
+  p.kind = PrimitiveKind::Plane;
+  p.p0 = w.point;
+  if (dimension == 2) {
+    if (std::hypot(w.normal.x(), w.normal.y()) <= kDegenerate * w.normal.norm())
+      fail(w, "normal must have an x or y component in 2D");
+    p.n = unit(w, Vec3(w.normal.x(), w.normal.y(), 0), "normal");
+  } else {
+    p.n = unit(w, w.normal, "normal");
+  }
+  return p;
+}
+
+Primitive cylinder(const dem::WallParams& w) {
+  if (!(w.radius > 0)) fail(w, "radius must be positive");
+  if (!(w.length > 0)) fail(w, "length must be positive");
+  Primitive p;
+  p.kind = PrimitiveKind::Cylinder;
+  p.p0 = w.point;
+  p.n = unit(w, w.axis, "axis");
+  p.radius = w.radius;
+  p.length = w.length;
+  p.inside = w.inside;
+  return p;
+}
+
+void check_motion(const dem::WallParams& w, int dimension) {
+  const dem::WallMotionParams& m = w.motion;
+  if (m.move_stop < m.move_start) fail(w, "move_stop must not be before move_start");
+  if (m.amplitude != 0) {
+    unit(w, m.direction, "direction");
+    if (m.frequency < 0) fail(w, "frequency must not be negative");
+  }
+  if (dimension == 2) {
+    if (m.angular_velocity.x() != 0 || m.angular_velocity.y() != 0)
+      fail(w, "in 2D, angular_velocity must be about z");
+    if (m.amplitude != 0 && m.direction.head<2>().isZero())
+      fail(w, "in 2D, the vibration direction must have an x or y component");
+  }
+}
+
+const char* kind_name(dem::WallKind kind) {
+  switch (kind) {
+    case dem::WallKind::Segment:
+      return "segment";
+    case dem::WallKind::Arc:
+      return "arc";
+    case dem::WallKind::Plane:
+      return "plane";
+    case dem::WallKind::Triangle:
+      return "triangle";
+    case dem::WallKind::Mesh:
+      return "mesh";
+    case dem::WallKind::Cylinder:
+      return "cylinder";
+  }
+  return "?";
+}
+
+}  // namespace
+
+Wall make_wall(const dem::WallParams& params, int material_index, int dimension) {
+  dem::WallParams w = params;
+  if (dimension == 2) w.a.z() = w.b.z() = w.center.z() = w.point.z() = 0;  // 2D walls lie in z = 0
+  if (dimension != 2 && dimension != 3)
+    fail(w, fmt::format("dimension {} is not 2 or 3", dimension));
+  const bool kind_2d = w.kind == dem::WallKind::Segment || w.kind == dem::WallKind::Arc;
+  const bool kind_3d = w.kind != dem::WallKind::Plane && !kind_2d;
+  if ((dimension == 2 && kind_3d) || (dimension == 3 && kind_2d))
+    fail(w, fmt::format("kind '{}' is not available in {}D", kind_name(w.kind), dimension));
+  check_motion(w, dimension);
+
+  Wall wall;
+  wall.name = w.name;
+  wall.material = material_index;
+  wall.dimension = dimension;
+  wall.motion = w.motion;
+  switch (w.kind) {
+    case dem::WallKind::Segment:
+      wall.reference.push_back(segment(w));
+      break;
+    case dem::WallKind::Arc:
+      wall.reference.push_back(arc(w));
+      break;
+    case dem::WallKind::Plane:
+      wall.reference.push_back(plane(w, dimension));
+      break;
+    case dem::WallKind::Triangle: {
+      Primitive p;
+      if (w.vertices.size() != 3)
+        fail(w, fmt::format("a triangle needs 3 vertices, got {}", w.vertices.size()));
+      if (!make_triangle(w.vertices[0], w.vertices[1], w.vertices[2], p))
+        fail(w, "degenerate triangle (vertices on one line)");
+      wall.reference.push_back(p);
+      break;
+    }
+    case dem::WallKind::Mesh: {
+      if (!(w.scale > 0) || !std::isfinite(w.scale)) fail(w, "scale must be positive");
+      wall.reference = read_stl(w.file, w.scale, w.offset);
+      if (wall.reference.empty()) fail(w, fmt::format("mesh file '{}' has no triangles", w.file));
+      break;
+    }
+    case dem::WallKind::Cylinder:
+      wall.reference.push_back(cylinder(w));
+      break;
+  }
+  wall.current = wall.reference;
+  wall.update(0.0);
+  return wall;
+}
+
+}  // namespace talus::geometry

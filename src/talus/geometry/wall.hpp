@@ -1,0 +1,55 @@
+#pragma once
+// A wall: a set of primitives that moves as one rigid body and collects the
+// force the particles exert on it.
+//
+// Motion (dem::WallMotionParams), all exact functions of time so that a run
+// resumed from a checkpoint puts the walls exactly where they were:
+//   - translation with `velocity` while move_start <= t < move_stop,
+//   - rotation with `angular_velocity` about `pivot` over the same interval
+//     (the pivot travels with the wall),
+//   - vibration A sin(2 pi f t + phase) along `direction`, at all times, so the
+//     given geometry is the rest position and update(0) applies A sin(phase),
+//   - removal: the wall is inactive from remove_at on.
+#include <string>
+#include <vector>
+
+#include "talus/dem/params.hpp"
+#include "talus/geometry/primitive.hpp"
+
+namespace talus::geometry {
+
+struct Wall {
+  std::string name;
+  int material = 0;                  // index into the scenario's materials
+  int dimension = 3;                 // 2 or 3
+  std::vector<Primitive> reference;  // geometry as given, zero displacement
+  std::vector<Primitive> current;    // geometry at the time of the last update()
+  dem::WallMotionParams motion;
+  // Filled by the solver. Torque is about the current pivot, pivot_at(t)
+  // (the origin unless a pivot is given); impulse is the time integral of force.
+  Vec3 force = Vec3::Zero();
+  Vec3 torque = Vec3::Zero();
+  Vec3 impulse = Vec3::Zero();
+
+  // Recomputes `current` from `reference` and the motion at time t.
+  void update(double t);
+  // Velocity of the wall material at `point` (a point of the current geometry).
+  Vec3 velocity_at(const Vec3& point, double t) const;
+  bool active(double t) const { return t < motion.remove_at; }
+  // Displacement of the pivot: translation plus vibration.
+  Vec3 displacement(double t) const;
+  Vec3 pivot_at(double t) const { return motion.pivot + displacement(t); }
+  // Signed rotation angle about angular_velocity's direction.
+  double rotation_angle(double t) const;
+  // False for a wall that never moves: update() is then a no-op.
+  bool moves() const;
+  // Axis-aligned box around the current primitives.
+  void bounds(Vec3& lo, Vec3& hi) const;
+};
+
+// Turns validated wall parameters into a wall at t = 0. Throws InputError,
+// naming the wall, for degenerate geometry or a kind that does not exist in
+// `dimension` (2D: Segment, Arc, Plane; 3D: Plane, Triangle, Mesh, Cylinder).
+Wall make_wall(const dem::WallParams& params, int material_index, int dimension);
+
+}  // namespace talus::geometry

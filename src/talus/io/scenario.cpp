@@ -1,0 +1,193 @@
+// Loading a scenario file, and the top level of the DEM scenario: [run],
+// [contact], [output] and the checks that span several tables.
+#include "talus/io/scenario.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <climits>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "talus/core/error.hpp"
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io {
+namespace {
+
+using detail::between;
+using detail::DemContext;
+using detail::non_negative;
+using detail::number_in;
+using detail::positive;
+using detail::required_number_in;
+
+const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}};
+const std::vector<std::string_view> kTopLevelKeys = {
+    "method", "name", "description", "run", "contact", "materials", "walls", "particles", "output"};
+
+dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
+  dem::RunParams run;
+  const auto dimension = r.required_integer("dimension");
+  r.expect(dimension == 2 || dimension == 3, "dimension", "2 or 3");
+  run.dimension = ctx.dimension = static_cast<int>(dimension);
+  run.duration = required_number_in(r, "duration", positive());
+  if (r.is_string("time_step")) {
+    r.required_enum<int>("time_step", {{"auto", 0}});
+  } else {
+    if (r.has("time_step") && !r.is_number("time_step")) {
+      r.expect(false, "time_step", "a positive number (s) or \"auto\"");
+    }
+    run.time_step = number_in(r, "time_step", 0.0, positive());
+  }
+  run.safety_factor = number_in(r, "safety_factor", run.safety_factor, between(0.0, 1.0, true, false));
+  run.gravity = detail::point_or(r, "gravity", ctx, -9.81 * detail::up(ctx));
+  detail::read_box(r, "domain", ctx, run.domain_min, run.domain_max);
+  run.skin = number_in(r, "skin", 0.0, non_negative());
+  const auto seed = r.integer("seed", run.seed);
+  r.expect(seed >= 0 && seed <= UINT_MAX, "seed", "an integer in [0, 4294967295]");
+  run.seed = static_cast<unsigned>(seed);
+  run.ke_blowup_factor = number_in(r, "ke_blowup_factor", run.ke_blowup_factor, positive());
+  r.finish();
+  return run;
+}
+
+// Everything in [contact] except the pairs, which need the material names.
+dem::ContactParams read_contact(TomlReader& r) {
+  dem::ContactParams c;
+  c.model = r.enumeration("model", detail::kContactModels, c.model);
+  c.rolling = r.enumeration("rolling", detail::kRollingModels, c.rolling);
+  c.friction_rule = r.enumeration("friction_rule", detail::kPairRules, c.friction_rule);
+  c.lock_rotation = r.boolean("lock_rotation", c.lock_rotation);
+  c.local_damping = number_in(r, "local_damping", c.local_damping, between(0.0, 1.0, false, true));
+  c.dashpot_may_pull = r.boolean("dashpot_may_pull", c.dashpot_may_pull);
+  c.tangential_damping = number_in(r, "tangential_damping", c.tangential_damping, non_negative());
+  c.kuen_wall_depth = number_in(r, "kuen_wall_depth", c.kuen_wall_depth, positive());
+  c.kuen_particle_factor =
+      number_in(r, "kuen_particle_factor", c.kuen_particle_factor, between(0.0, 1.0, false, false));
+  c.epsd_stiffness_factor = number_in(r, "epsd_stiffness_factor", c.epsd_stiffness_factor, positive());
+  c.epsd_damping_ratio = number_in(r, "epsd_damping_ratio", c.epsd_damping_ratio, non_negative());
+  return c;
+}
+
+dem::OutputParams read_output(TomlReader& r) {
+  dem::OutputParams o;
+  o.snapshot_interval = number_in(r, "snapshot_interval", 0.0, non_negative());
+  o.series_interval = number_in(r, "series_interval", 0.0, non_negative());
+  o.checkpoint_interval = number_in(r, "checkpoint_interval", 0.0, non_negative());
+  o.write_snapshots = r.boolean("snapshots", o.write_snapshots);
+  r.finish();
+  return o;
+}
+
+// Particles need a mass: every material they use must have a density.
+void check_densities(const dem::DemScenario& s, std::vector<TomlReader>& material_readers) {
+  for (const auto& source : s.sources) {
+    std::vector<std::string> used = {source.material};
+    for (const auto& p : source.particles) used.push_back(p.material);
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+      const bool is_used = std::find(used.begin(), used.end(), s.materials[i].name) != used.end();
+      if (is_used && s.materials[i].density <= 0.0) {
+        material_readers[i].fail("density",
+                                 fmt::format("missing: material '{}' is used by particles, which "
+                                             "need a density (expected a positive number, kg/m^3)",
+                                             s.materials[i].name));
+      }
+    }
+  }
+}
+
+TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty) {
+  if (auto table = root.optional_table(key)) return *table;
+  return TomlReader(empty, root.file(), std::string(key), std::string(key));
+}
+
+}  // namespace
+
+ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
+                                const std::vector<std::string>& overrides) {
+  ScenarioFile file{path, "", {}};
+  try {
+    file.table = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+  try {
+    apply_overrides(file.table, overrides);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", path, e.what()));
+  }
+  TomlReader root(file.table, path);
+  const int method = root.required_enum("method", kMethods);
+  file.method = root.required_string("method");
+  if (method != 0) {
+    root.fail("method", fmt::format("method \"{}\" is not implemented yet (available: \"dem\")",
+                                    file.method));
+  }
+  return file;
+}
+
+ScenarioFile load_scenario_file(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open the scenario file", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return load_scenario_text(text.str(), path, overrides);
+}
+
+dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
+  TomlReader root(file.table, file.path);
+  // Unknown top-level tables first: a misspelt [materails] would otherwise
+  // show up as a confusing "missing [[materials]]".
+  for (std::string_view key : kTopLevelKeys) root.mark_read(key);
+  root.finish();
+
+  dem::DemScenario s;
+  const std::string method = root.required_string("method");
+  if (method != "dem") root.expect(false, "method", "\"dem\"");
+  s.name = root.string("name", std::filesystem::path(file.path).stem().string());
+  s.description = root.string("description", "");
+
+  DemContext ctx;
+  ctx.folder = std::filesystem::path(file.path).parent_path();
+  TomlReader run = root.required_table("run");
+  s.run = read_run(run, ctx);
+
+  const toml::table empty;
+  TomlReader contact = table_or_empty(root, "contact", empty);
+  s.contact = read_contact(contact);
+
+  std::vector<TomlReader> material_readers = root.tables("materials");
+  if (material_readers.empty()) {
+    root.fail("materials", "missing: at least one [[materials]] table is needed");
+  }
+  s.materials = detail::read_materials(material_readers, s.contact.model);
+  for (const auto& m : s.materials) ctx.material_names.push_back(m.name);
+  s.contact.pairs = detail::read_pairs(contact, ctx);
+  contact.finish();
+
+  std::vector<TomlReader> walls = root.tables("walls");
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    s.walls.push_back(detail::read_wall(walls[i], i, ctx));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (s.walls[j].name == s.walls[i].name) {
+        walls[i].fail("name", fmt::format("wall name '{}' is used twice (first at line {})",
+                                          s.walls[i].name, walls[j].line()));
+      }
+    }
+  }
+
+  std::vector<TomlReader> sources = root.tables("particles");
+  if (sources.empty()) root.fail("particles", "missing: at least one [[particles]] table is needed");
+  for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
+  check_densities(s, material_readers);
+
+  TomlReader output = table_or_empty(root, "output", empty);
+  s.output = read_output(output);
+  root.finish();
+  return s;
+}
+
+}  // namespace talus::io

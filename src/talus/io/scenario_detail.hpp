@@ -1,0 +1,100 @@
+#pragma once
+// Internals shared by the parts of the DEM scenario reader and writer
+// (scenario*.cpp). Not part of the public API.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "talus/dem/params.hpp"
+#include "talus/io/toml_reader.hpp"
+
+namespace talus::io::detail {
+
+// The file's names of the enumerated options; the first one is listed first
+// in messages, the writer maps values back to these names.
+inline const EnumNames<dem::ContactModel> kContactModels = {
+    {"linear", dem::ContactModel::Linear},
+    {"hertz_mindlin", dem::ContactModel::HertzMindlin},
+    {"viscoelastic_hertz", dem::ContactModel::ViscoelasticHertz}};
+inline const EnumNames<dem::RollingModel> kRollingModels = {
+    {"none", dem::RollingModel::None}, {"epsd", dem::RollingModel::Epsd}, {"kuen", dem::RollingModel::Kuen}};
+inline const EnumNames<dem::PairRule> kPairRules = {{"max", dem::PairRule::Max},
+                                                    {"min", dem::PairRule::Min},
+                                                    {"harmonic", dem::PairRule::Harmonic},
+                                                    {"mean", dem::PairRule::Mean}};
+inline const EnumNames<dem::WallKind> kWallKinds = {
+    {"segment", dem::WallKind::Segment}, {"arc", dem::WallKind::Arc},
+    {"plane", dem::WallKind::Plane},     {"triangle", dem::WallKind::Triangle},
+    {"mesh", dem::WallKind::Mesh},       {"cylinder", dem::WallKind::Cylinder}};
+inline const EnumNames<dem::SourceKind> kSourceKinds = {{"list", dem::SourceKind::List},
+                                                        {"lattice", dem::SourceKind::Lattice},
+                                                        {"random_fill", dem::SourceKind::RandomFill},
+                                                        {"grow", dem::SourceKind::Grow},
+                                                        {"file", dem::SourceKind::File}};
+inline const std::vector<std::string> kJitterNames = {"none", "peer"};
+
+template <typename E>
+std::string name_of(const EnumNames<E>& names, E value) {
+  for (const auto& [name, v] : names) {
+    if (v == value) return std::string(name);
+  }
+  return "?";
+}
+
+// What the parts of the reader need to know about the whole scenario.
+struct DemContext {
+  int dimension = 3;
+  std::filesystem::path folder;  // of the scenario file, for relative paths
+  std::vector<std::string> material_names;
+};
+
+// An interval a number must lie in, and how to say so in a message.
+struct Interval {
+  double low = -std::numeric_limits<double>::infinity();
+  double high = std::numeric_limits<double>::infinity();
+  bool low_open = false, high_open = false;
+  bool contains(double x) const;
+  std::string describe() const;  // "a positive number", "a number in (0, 1]"
+};
+Interval positive();
+Interval non_negative();
+Interval between(double low, double high, bool low_open, bool high_open);
+
+std::optional<double> optional_number_in(TomlReader& r, std::string_view key, Interval range);
+double number_in(TomlReader& r, std::string_view key, double fallback, Interval range);
+double required_number_in(TomlReader& r, std::string_view key, Interval range);
+
+// A point or direction; in 2D runs it is [x, y] (a third number must be 0).
+Vec3 required_point(TomlReader& r, std::string_view key, const DemContext& ctx);
+Vec3 point_or(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& fallback);
+// A non-zero vector, normalised.
+Vec3 unit_vector_or(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& fallback);
+// An angular velocity in rad/s: in 2D a number (about z) or [0, 0, w].
+Vec3 spin_or_zero(TomlReader& r, std::string_view key, const DemContext& ctx);
+// A box {min = [..], max = [..]} with min < max in every used coordinate.
+void read_box(TomlReader& r, std::string_view key, const DemContext& ctx, Vec3& min, Vec3& max);
+// A file name, relative to the scenario's folder unless absolute; must exist.
+std::string required_file(TomlReader& r, std::string_view key, const DemContext& ctx);
+// Fails unless name is one of the [[materials]].
+void check_material(const TomlReader& r, std::string_view key, const std::string& name,
+                    const DemContext& ctx);
+// "up" in the run's dimension: +y in 2D, +z in 3D.
+Vec3 up(const DemContext& ctx);
+
+// The parts of parse_dem_scenario, one per table.
+std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers,
+                                                dem::ContactModel model);
+std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext& ctx);
+dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ctx);
+dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx);
+
+// TOML text for a JSON object of tables, arrays of tables and values, keys in
+// the object's order. Small tables of plain values become inline tables.
+std::string json_to_toml(const nlohmann::ordered_json& root);
+
+}  // namespace talus::io::detail

@@ -1,0 +1,121 @@
+// Value checks shared by the parts of the DEM scenario reader.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io::detail {
+
+bool Interval::contains(double x) const {
+  const bool above = low_open ? x > low : x >= low;
+  const bool below = high_open ? x < high : x <= high;
+  return above && below;
+}
+
+std::string Interval::describe() const {
+  if (std::isinf(high)) {
+    if (low == 0.0) return low_open ? "a positive number" : "a number >= 0";
+    return fmt::format("a number {} {}", low_open ? ">" : ">=", low);
+  }
+  return fmt::format("a number in {}{}, {}{}", low_open ? "(" : "[", low, high, high_open ? ")" : "]");
+}
+
+Interval positive() { return {0.0, std::numeric_limits<double>::infinity(), true, true}; }
+Interval non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, true}; }
+Interval between(double low, double high, bool low_open, bool high_open) {
+  return {low, high, low_open, high_open};
+}
+
+std::optional<double> optional_number_in(TomlReader& r, std::string_view key, Interval range) {
+  if (r.has(key) && !r.is_number(key)) r.expect(false, key, range.describe());
+  const auto value = r.optional_number(key);
+  if (value) r.expect(range.contains(*value), key, range.describe());
+  return value;
+}
+
+double number_in(TomlReader& r, std::string_view key, double fallback, Interval range) {
+  return optional_number_in(r, key, range).value_or(fallback);
+}
+
+double required_number_in(TomlReader& r, std::string_view key, Interval range) {
+  if (auto value = optional_number_in(r, key, range)) return *value;
+  r.missing(key, fmt::format("missing (expected {})", range.describe()));
+}
+
+namespace {
+Vec3 checked_point(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& v) {
+  if (ctx.dimension == 2 && v.z() != 0.0) {
+    r.fail(key, fmt::format("expected [x, y] in a 2D run (run.dimension = 2), got {}", r.text(key)));
+  }
+  return v;
+}
+}  // namespace
+
+Vec3 required_point(TomlReader& r, std::string_view key, const DemContext& ctx) {
+  return checked_point(r, key, ctx, r.required_vec3(key));
+}
+
+Vec3 point_or(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& fallback) {
+  return checked_point(r, key, ctx, r.vec3(key, fallback));
+}
+
+Vec3 unit_vector_or(TomlReader& r, std::string_view key, const DemContext& ctx,
+                    const Vec3& fallback) {
+  const Vec3 v = point_or(r, key, ctx, fallback);
+  r.expect(v.norm() > 0.0, key, "a non-zero vector");
+  return v.normalized();
+}
+
+Vec3 spin_or_zero(TomlReader& r, std::string_view key, const DemContext& ctx) {
+  if (ctx.dimension == 2 && r.is_number(key)) return Vec3(0.0, 0.0, r.required_number(key));
+  if (ctx.dimension == 2 && r.has(key) && !r.table().get(key)->is_array()) {
+    r.expect(false, key, "a number (rad/s about z)");
+  }
+  const Vec3 w = r.vec3(key, Vec3::Zero());
+  if (ctx.dimension == 2 && (w.x() != 0.0 || w.y() != 0.0)) {
+    r.expect(false, key, "a number (rad/s about z) in a 2D run");
+  }
+  return w;
+}
+
+void read_box(TomlReader& r, std::string_view key, const DemContext& ctx, Vec3& min, Vec3& max) {
+  TomlReader box = r.required_table(key);
+  min = required_point(box, "min", ctx);
+  max = required_point(box, "max", ctx);
+  box.finish();
+  for (int i = 0; i < ctx.dimension; ++i) {
+    if (!(min[i] < max[i])) {
+      box.fail("max", fmt::format("expected max > min in every coordinate, got min = {}, max = {}",
+                                  box.text("min"), box.text("max")));
+    }
+  }
+}
+
+std::string required_file(TomlReader& r, std::string_view key, const DemContext& ctx) {
+  const std::filesystem::path given = r.required_string(key);
+  r.expect(!given.empty(), key, "a file name");
+  const std::filesystem::path path =
+      std::filesystem::absolute(given.is_absolute() ? given : ctx.folder / given).lexically_normal();
+  if (!std::filesystem::is_regular_file(path)) {
+    r.fail(key, fmt::format("no such file: {}", path.string()));
+  }
+  return path.string();
+}
+
+void check_material(const TomlReader& r, std::string_view key, const std::string& name,
+                    const DemContext& ctx) {
+  const auto& names = ctx.material_names;
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::string defined;
+  for (const std::string& n : names) defined += (defined.empty() ? "'" : ", '") + n + "'";
+  const std::string guess = closest_name(name, names);
+  const std::string hint = guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess);
+  r.fail(key, fmt::format("no material named '{}'{} (defined in [[materials]]: {})", name, hint,
+                          defined));
+}
+
+Vec3 up(const DemContext& ctx) { return ctx.dimension == 2 ? Vec3::UnitY() : Vec3::UnitZ(); }
+
+}  // namespace talus::io::detail

@@ -1,0 +1,120 @@
+// [[materials]] and [[contact.pairs]]: material properties, checked against
+// what the chosen contact model needs.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io::detail {
+namespace {
+
+// A Coulomb coefficient given either directly or as an angle in degrees.
+std::optional<double> read_friction(TomlReader& r, std::string_view key, std::string_view angle_key) {
+  const auto mu = optional_number_in(r, key, non_negative());
+  const auto phi = optional_number_in(r, angle_key, between(0.0, 90.0, false, true));
+  if (mu && phi) {
+    r.fail(angle_key, fmt::format("give either '{}' or '{}', not both", key, angle_key));
+  }
+  if (phi) return std::tan(deg2rad(*phi));
+  return mu;
+}
+
+void require(TomlReader& r, std::string_view key, bool present, dem::ContactModel model,
+             std::string_view expected) {
+  if (present) return;
+  r.missing(key, fmt::format("missing: contact.model = \"{}\" needs it (expected {})",
+                          name_of(kContactModels, model), expected));
+}
+
+dem::MaterialParams read_material(TomlReader& r, dem::ContactModel model) {
+  using dem::ContactModel;
+  dem::MaterialParams m;
+  m.name = r.required_string("name");
+  r.expect(!m.name.empty(), "name", "a non-empty name");
+  // Density is needed only by materials that particles use; the caller checks.
+  m.density = number_in(r, "density", 0.0, positive());
+
+  const auto youngs = optional_number_in(r, "youngs_modulus", positive());
+  const bool hertz = model != ContactModel::Linear;
+  if (hertz) require(r, "youngs_modulus", youngs.has_value(), model, "a positive number, Pa");
+  m.youngs_modulus = youngs.value_or(0.0);
+  m.poisson_ratio = number_in(r, "poisson_ratio", m.poisson_ratio, between(-1.0, 0.5, true, true));
+  const auto restitution = optional_number_in(r, "restitution", between(0.0, 1.0, true, false));
+  if (model == ContactModel::HertzMindlin) {
+    require(r, "restitution", restitution.has_value(), model, "a number in (0, 1]");
+  }
+  m.restitution = restitution.value_or(m.restitution);
+
+  const auto friction = read_friction(r, "friction", "friction_angle");
+  if (!friction) {
+    r.missing("friction", "missing (expected 'friction' >= 0 or 'friction_angle' in degrees)");
+  }
+  m.friction = *friction;
+  m.rolling_friction = number_in(r, "rolling_friction", 0.0, non_negative());
+
+  const auto kn = optional_number_in(r, "normal_stiffness", positive());
+  if (model == ContactModel::Linear) {
+    require(r, "normal_stiffness", kn.has_value(), model, "a positive number, N/m");
+  }
+  m.normal_stiffness = kn.value_or(0.0);
+  // PFC practice (and Kuen's set): k_s = k_n unless given.
+  m.shear_stiffness = number_in(r, "shear_stiffness", m.normal_stiffness, non_negative());
+  m.damping_ratio = number_in(r, "damping_ratio", 0.0, between(0.0, 1.0, false, true));
+  m.dissipation = number_in(r, "dissipation", 0.0, non_negative());
+  r.finish();
+  return m;
+}
+
+}  // namespace
+
+std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers,
+                                                dem::ContactModel model) {
+  std::vector<dem::MaterialParams> materials;
+  std::map<std::string, int> first_line;
+  for (TomlReader& r : readers) {
+    materials.push_back(read_material(r, model));
+    const auto [it, added] = first_line.emplace(materials.back().name, r.line());
+    if (!added) {
+      r.fail("name", fmt::format("material '{}' is defined twice (first at line {})", it->first,
+                                 it->second));
+    }
+  }
+  return materials;
+}
+
+std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext& ctx) {
+  std::vector<dem::PairOverride> pairs;
+  for (TomlReader& r : contact.tables("pairs")) {
+    dem::PairOverride pair;
+    const std::vector<std::string> names = r.string_list("materials");
+    if (!r.has("materials")) r.missing("materials", "missing (expected [\"name_a\", \"name_b\"])");
+    r.expect(names.size() == 2, "materials", "two material names [\"name_a\", \"name_b\"]");
+    check_material(r, "materials", names[0], ctx);
+    check_material(r, "materials", names[1], ctx);
+    pair.material_a = names[0];
+    pair.material_b = names[1];
+    pair.friction = read_friction(r, "friction", "friction_angle");
+    pair.rolling_friction = optional_number_in(r, "rolling_friction", non_negative());
+    pair.restitution = optional_number_in(r, "restitution", between(0.0, 1.0, true, false));
+    if (!pair.friction && !pair.rolling_friction && !pair.restitution) {
+      r.fail("materials",
+             "expected at least one of 'friction', 'friction_angle', 'rolling_friction', "
+             "'restitution' for this pair");
+    }
+    for (const dem::PairOverride& other : pairs) {
+      const bool same = (other.material_a == pair.material_a && other.material_b == pair.material_b) ||
+                        (other.material_a == pair.material_b && other.material_b == pair.material_a);
+      if (same) {
+        r.fail("materials", fmt::format("the pair '{}'-'{}' is given twice", pair.material_a,
+                                        pair.material_b));
+      }
+    }
+    r.finish();
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+}  // namespace talus::io::detail

@@ -1,0 +1,230 @@
+// The resolved DEM scenario written back as a scenario file (and as JSON for
+// summary.json). Every value is written, defaults included, so the output
+// says exactly what ran; infinite times ("never") are left out. Built as an
+// ordered JSON object so that the keys keep the order of the documentation.
+#include <cmath>
+
+#include "talus/io/scenario.hpp"
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io {
+namespace {
+
+using detail::name_of;
+using Json = nlohmann::ordered_json;
+
+class Writer {
+ public:
+  explicit Writer(int dimension) : dim_(dimension) {}
+
+  // Points as [x, y] in 2D, [x, y, z] in 3D.
+  Json vec(const Vec3& v) const {
+    Json a = Json::array();
+    for (int i = 0; i < dim_; ++i) a.push_back(v[i]);
+    return a;
+  }
+  // Angular velocities: a number about z in 2D.
+  void spin(Json& t, const std::string& key, const Vec3& w) const {
+    if (dim_ == 2) t[key] = w.z();
+    else t[key] = vec(w);
+  }
+  static void finite(Json& t, const std::string& key, double value) {
+    if (std::isfinite(value)) t[key] = value;
+  }
+  Json box(const Vec3& min, const Vec3& max) const {
+    Json b{{"min", vec(min)}, {"max", vec(max)}};
+    return b;
+  }
+
+  Json run(const dem::RunParams& r) const {
+    Json t{{"dimension", r.dimension}, {"duration", r.duration}};
+    if (r.time_step > 0.0) t["time_step"] = r.time_step;
+    else t["time_step"] = "auto";
+    t["safety_factor"] = r.safety_factor;
+    t["gravity"] = vec(r.gravity);
+    t["domain"] = box(r.domain_min, r.domain_max);
+    t["skin"] = r.skin;
+    t["seed"] = static_cast<std::int64_t>(r.seed);
+    t["ke_blowup_factor"] = r.ke_blowup_factor;
+    return t;
+  }
+
+  static Json contact(const dem::ContactParams& c) {
+    Json t{{"model", name_of(detail::kContactModels, c.model)},
+                  {"rolling", name_of(detail::kRollingModels, c.rolling)},
+                  {"friction_rule", name_of(detail::kPairRules, c.friction_rule)},
+                  {"lock_rotation", c.lock_rotation},
+                  {"local_damping", c.local_damping},
+                  {"dashpot_may_pull", c.dashpot_may_pull},
+                  {"tangential_damping", c.tangential_damping},
+                  {"kuen_wall_depth", c.kuen_wall_depth},
+                  {"kuen_particle_factor", c.kuen_particle_factor},
+                  {"epsd_stiffness_factor", c.epsd_stiffness_factor},
+                  {"epsd_damping_ratio", c.epsd_damping_ratio}};
+    Json pairs = Json::array();
+    for (const auto& p : c.pairs) {
+      Json pt{{"materials", Json::array({p.material_a, p.material_b})}};
+      if (p.friction) pt["friction"] = *p.friction;
+      if (p.rolling_friction) pt["rolling_friction"] = *p.rolling_friction;
+      if (p.restitution) pt["restitution"] = *p.restitution;
+      pairs.push_back(std::move(pt));
+    }
+    if (!pairs.empty()) t["pairs"] = std::move(pairs);
+    return t;
+  }
+
+  static Json material(const dem::MaterialParams& m) {
+    Json t{{"name", m.name}};
+    // Zero means "not given" for these; they are optional for some models.
+    if (m.density > 0.0) t["density"] = m.density;
+    if (m.youngs_modulus > 0.0) t["youngs_modulus"] = m.youngs_modulus;
+    t["poisson_ratio"] = m.poisson_ratio;
+    t["restitution"] = m.restitution;
+    t["friction"] = m.friction;
+    t["rolling_friction"] = m.rolling_friction;
+    if (m.normal_stiffness > 0.0) t["normal_stiffness"] = m.normal_stiffness;
+    t["shear_stiffness"] = m.shear_stiffness;
+    t["damping_ratio"] = m.damping_ratio;
+    t["dissipation"] = m.dissipation;
+    return t;
+  }
+
+  Json motion(const dem::WallMotionParams& m) const {
+    Json t{{"velocity", vec(m.velocity)}, {"start", m.move_start}};
+    finite(t, "stop", m.move_stop);
+    spin(t, "angular_velocity", m.angular_velocity);
+    t["pivot"] = vec(m.pivot);
+    t["amplitude"] = m.amplitude;
+    t["frequency"] = m.frequency;
+    t["phase"] = rad2deg(m.phase);
+    t["direction"] = vec(m.direction);
+    finite(t, "remove_at", m.remove_at);
+    return t;
+  }
+
+  Json wall(const dem::WallParams& w) const {
+    Json t{{"name", w.name}, {"type", name_of(detail::kWallKinds, w.kind)},
+                  {"material", w.material}};
+    using dem::WallKind;
+    switch (w.kind) {
+      case WallKind::Segment:
+        t["a"] = vec(w.a);
+        t["b"] = vec(w.b);
+        break;
+      case WallKind::Arc:
+        t["center"] = vec(w.center);
+        t["radius"] = w.radius;
+        t["angle_start"] = rad2deg(w.angle_start);
+        t["angle_end"] = rad2deg(w.angle_end);
+        break;
+      case WallKind::Plane:
+        t["point"] = vec(w.point);
+        t["normal"] = vec(w.normal);
+        break;
+      case WallKind::Triangle: {
+        Json vertices = Json::array();
+        for (const Vec3& v : w.vertices) vertices.push_back(vec(v));
+        t["vertices"] = std::move(vertices);
+        break;
+      }
+      case WallKind::Mesh:
+        t["file"] = w.file;
+        t["scale"] = w.scale;
+        t["offset"] = vec(w.offset);
+        break;
+      case WallKind::Cylinder:
+        t["point"] = vec(w.point);
+        t["axis"] = vec(w.axis);
+        t["radius"] = w.radius;
+        t["inside"] = w.inside;
+        finite(t, "length", w.length);
+        break;
+    }
+    t["motion"] = motion(w.motion);
+    return t;
+  }
+
+  Json source(const dem::ParticleSourceParams& s) const {
+    Json t{{"type", name_of(detail::kSourceKinds, s.kind)}};
+    if (!s.material.empty()) t["material"] = s.material;
+    using dem::SourceKind;
+    const bool fill = s.kind == SourceKind::RandomFill || s.kind == SourceKind::Grow;
+    if (s.kind == SourceKind::List) {
+      Json list = Json::array();
+      for (const auto& p : s.particles) {
+        Json pt{{"position", vec(p.position)}, {"velocity", vec(p.velocity)}};
+        spin(pt, "angular_velocity", p.angular_velocity);
+        pt["radius"] = p.radius;
+        pt["material"] = p.material;
+        list.push_back(std::move(pt));
+      }
+      t["list"] = std::move(list);
+    }
+    if (s.kind == SourceKind::Lattice || (fill && s.polygon.empty())) {
+      t["box"] = box(s.box_min, s.box_max);
+    }
+    if (fill && !s.polygon.empty()) {
+      Json polygon = Json::array();
+      for (const Vec3& p : s.polygon) polygon.push_back(vec(p));
+      t["polygon"] = std::move(polygon);
+    }
+    if (s.kind == SourceKind::Lattice) {
+      t["spacing"] = s.spacing;
+      t["radius"] = s.radius;
+      t["jitter"] = s.jitter;
+    }
+    if (fill) {
+      t["radius_min"] = s.radius_min;
+      t["radius_max"] = s.radius_max;
+      if (s.kind == SourceKind::RandomFill && !s.count) t["porosity"] = s.porosity;
+      if (s.kind == SourceKind::Grow) t["packing_fraction"] = s.packing_fraction;
+      if (s.count) t["count"] = *s.count;
+      t["shrink"] = s.shrink;
+    }
+    if (s.kind == SourceKind::File) t["file"] = s.file;
+    if (s.settle.enabled) {
+      Json settle{{"ke_ratio", s.settle.ke_ratio}, {"max_time", s.settle.max_time}};
+      t["settle"] = std::move(settle);
+    }
+    return t;
+  }
+
+  static Json output(const dem::OutputParams& o) {
+    return Json{{"snapshot_interval", o.snapshot_interval},
+                       {"series_interval", o.series_interval},
+                       {"checkpoint_interval", o.checkpoint_interval},
+                       {"snapshots", o.write_snapshots}};
+  }
+
+ private:
+  int dim_;
+};
+
+Json scenario_table(const dem::DemScenario& s) {
+  const Writer w(s.run.dimension);
+  Json doc{{"method", "dem"}, {"name", s.name}, {"description", s.description}};
+  doc["run"] = w.run(s.run);
+  doc["contact"] = Writer::contact(s.contact);
+  Json materials = Json::array(), walls = Json::array(), sources = Json::array();
+  for (const auto& m : s.materials) materials.push_back(Writer::material(m));
+  for (const auto& wall : s.walls) walls.push_back(w.wall(wall));
+  for (const auto& source : s.sources) sources.push_back(w.source(source));
+  doc["materials"] = std::move(materials);
+  if (!walls.empty()) doc["walls"] = std::move(walls);
+  doc["particles"] = std::move(sources);
+  doc["output"] = Writer::output(s.output);
+  return doc;
+}
+
+}  // namespace
+
+std::string scenario_to_toml(const dem::DemScenario& scenario) {
+  return "# Resolved DEM scenario: every parameter as used, defaults included.\n" +
+         detail::json_to_toml(scenario_table(scenario));
+}
+
+nlohmann::json scenario_to_json(const dem::DemScenario& scenario) {
+  return nlohmann::json::parse(scenario_table(scenario).dump());
+}
+
+}  // namespace talus::io
