@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Command-line contract: exit codes, error messages naming file/line/key,
+# output folder protection, outputs of a run. Args: <talus binary> <source dir>.
+set -uo pipefail
+talus=$1 src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail=0; pass=0
+check() {  # name, condition (command)
+  if eval "$2"; then pass=$((pass+1)); else echo "FAIL: $1"; fail=$((fail+1)); fi
+}
+small=(--set "run.duration=0.002" --set "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}"
+       --set "output.snapshot_interval=0.001")
+cc=$src/scenarios/column_collapse.toml
+
+"$talus" validate "$cc" >"$tmp/out" 2>&1; rc=$?
+check "validate bundled scenario exits 0" '[ $rc -eq 0 ] && grep -q valid "$tmp/out"'
+
+sed 's/^youngs_modulus = 1e7/youngs_modulus = 1e7\ndensty = 2500/' "$cc" >"$tmp/typo.toml"
+"$talus" validate "$tmp/typo.toml" >"$tmp/out" 2>&1; rc=$?
+line=$(grep -n '^densty' "$tmp/typo.toml" | cut -d: -f1)
+check "unknown key exits 2" '[ $rc -eq 2 ]'
+check "unknown key names file, line and key" 'grep -q "typo.toml:$line" "$tmp/out" && grep -q densty "$tmp/out"'
+
+sed 's/^density = 2500/density = -2500/' "$cc" >"$tmp/neg.toml"
+"$talus" validate "$tmp/neg.toml" >"$tmp/out" 2>&1; rc=$?
+check "negative density exits 2 naming the key" '[ $rc -eq 2 ] && grep -q density "$tmp/out"'
+
+"$talus" validate "$cc" --set run.time_step=1e-3 >"$tmp/out" 2>&1; rc=$?
+check "time step above critical exits 2" '[ $rc -eq 2 ] && grep -q "critical" "$tmp/out"'
+
+"$talus" validate "$cc" --set "run.domain={min=[0,0,0],max=[0.01,0.0201,0.1206]}" >"$tmp/out" 2>&1; rc=$?
+check "particles outside the domain exit 2" '[ $rc -eq 2 ] && grep -q "outside the domain" "$tmp/out"'
+
+"$talus" run "$tmp/missing.toml" --out "$tmp/x" >"$tmp/out" 2>&1; rc=$?
+check "missing file exits 2" '[ $rc -eq 2 ]'
+
+"$talus" run "$cc" --out "$tmp/run" --quiet "${small[@]}" >"$tmp/out" 2>&1; rc=$?
+check "small run exits 0" '[ $rc -eq 0 ]'
+for f in summary.json series.csv particles.pvd walls.pvd scenario.toml particles_000000.vtu; do
+  check "run writes $f" '[ -s "$tmp/run/$f" ]'
+done
+check "summary has status and metrics" 'grep -q "\"status\": \"completed\"" "$tmp/run/summary.json" && grep -q kinetic_energy_J "$tmp/run/summary.json"'
+check "series has a header and rows" '[ $(wc -l <"$tmp/run/series.csv") -ge 3 ] && head -1 "$tmp/run/series.csv" | grep -q "^time,step"'
+
+before=$(stat -c %Y "$tmp/run/summary.json")
+"$talus" run "$cc" --out "$tmp/run" --quiet "${small[@]}" >"$tmp/out" 2>&1; rc=$?
+check "existing output folder is refused (exit 2)" '[ $rc -eq 2 ] && grep -q -- "--force" "$tmp/out"'
+check "refused run left the folder alone" '[ "$(stat -c %Y "$tmp/run/summary.json")" = "$before" ]'
+"$talus" run "$cc" --out "$tmp/run" --force --quiet "${small[@]}" >"$tmp/out" 2>&1; rc=$?
+check "--force overwrites" '[ $rc -eq 0 ]'
+
+"$talus" list >"$tmp/out" 2>&1; rc=$?
+check "list shows bundled scenarios" '[ $rc -eq 0 ] && grep -q column_collapse "$tmp/out"'
+
+# Every bundled scenario validates as it is.
+for f in "$src"/scenarios/*.toml; do
+  "$talus" validate "$f" >"$tmp/out" 2>&1; rc=$?
+  check "bundled $(basename "$f") validates" '[ $rc -eq 0 ]'
+done
+
+echo "cli: $pass passed, $fail failed"
+[ $fail -eq 0 ]
