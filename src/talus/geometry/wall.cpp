@@ -48,7 +48,7 @@ void Wall::update(double t) {
     current = reference;
     return;
   }
-  const Vec3 pivot = motion.pivot - displacement(t);
+  const Vec3 pivot = motion.pivot;
   const Vec3 shift = displacement(t);
   const double omega = motion.angular_velocity.norm();
   const Eigen::Matrix3d rot =
