@@ -5,6 +5,10 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+// Hot per-contact functions are forced inline: the stepper instantiates many
+// contact models in one translation unit, where GCC's inliner gives up early.
+#define TALUS_HOT inline __attribute__((always_inline))
+
 namespace talus {
 
 using Vec3 = Eigen::Vector3d;
@@ -18,18 +22,18 @@ struct Space<2> {
   using Vec = Eigen::Vector2d;
   using Rot = double;  // angular velocity, torque, rotation about z
 
-  static Rot cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
-  static Vec cross(Rot w, const Vec& b) { return Vec(-w * b.y(), w * b.x()); }
-  static Rot rot_zero() { return 0.0; }
-  static double rot_norm(Rot w) { return std::abs(w); }
-  static double rot_dot(Rot a, Rot b) { return a * b; }
-  static Vec from3(const Vec3& v) { return Vec(v.x(), v.y()); }
-  static Vec3 to3(const Vec& v) { return Vec3(v.x(), v.y(), 0.0); }
-  static Vec3 rot_to3(Rot w) { return Vec3(0.0, 0.0, w); }
-  static Rot rot_from3(const Vec3& w) { return w.z(); }
+  TALUS_HOT static Rot cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+  TALUS_HOT static Vec cross(Rot w, const Vec& b) { return Vec(-w * b.y(), w * b.x()); }
+  TALUS_HOT static Rot rot_zero() { return 0.0; }
+  TALUS_HOT static double rot_norm(Rot w) { return std::abs(w); }
+  TALUS_HOT static double rot_dot(Rot a, Rot b) { return a * b; }
+  TALUS_HOT static Vec from3(const Vec3& v) { return Vec(v.x(), v.y()); }
+  TALUS_HOT static Vec3 to3(const Vec& v) { return Vec3(v.x(), v.y(), 0.0); }
+  TALUS_HOT static Vec3 rot_to3(Rot w) { return Vec3(0.0, 0.0, w); }
+  TALUS_HOT static Rot rot_from3(const Vec3& w) { return w.z(); }
   // Disks of unit thickness (PFC2D convention): mass per metre of depth.
-  static double volume(double r) { return M_PI * r * r; }
-  static double inertia_factor() { return 0.5; }
+  TALUS_HOT static double volume(double r) { return M_PI * r * r; }
+  TALUS_HOT static double inertia_factor() { return 0.5; }
 };
 
 template <>
@@ -38,19 +42,20 @@ struct Space<3> {
   using Vec = Eigen::Vector3d;
   using Rot = Eigen::Vector3d;
 
-  static Vec cross(const Vec& a, const Vec& b) { return a.cross(b); }
-  static Rot rot_zero() { return Rot::Zero(); }
-  static double rot_norm(const Rot& w) { return w.norm(); }
-  static double rot_dot(const Rot& a, const Rot& b) { return a.dot(b); }
-  static Vec from3(const Vec3& v) { return v; }
-  static Vec3 to3(const Vec& v) { return v; }
-  static Vec3 rot_to3(const Rot& w) { return w; }
-  static Rot rot_from3(const Vec3& w) { return w; }
-  static double volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
-  static double inertia_factor() { return 0.4; }
+  TALUS_HOT static Vec cross(const Vec& a, const Vec& b) { return a.cross(b); }
+  TALUS_HOT static Rot rot_zero() { return Rot::Zero(); }
+  TALUS_HOT static double rot_norm(const Rot& w) { return w.norm(); }
+  TALUS_HOT static double rot_dot(const Rot& a, const Rot& b) { return a.dot(b); }
+  TALUS_HOT static Vec from3(const Vec3& v) { return v; }
+  TALUS_HOT static Vec3 to3(const Vec& v) { return v; }
+  TALUS_HOT static Vec3 rot_to3(const Rot& w) { return w; }
+  TALUS_HOT static Rot rot_from3(const Vec3& w) { return w; }
+  TALUS_HOT static double volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
+  TALUS_HOT static double inertia_factor() { return 0.4; }
 };
 
 inline double deg2rad(double deg) { return deg * M_PI / 180.0; }
 inline double rad2deg(double rad) { return rad * 180.0 / M_PI; }
 
 }  // namespace talus
+

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include "talus/dem/contact/hertz_mindlin.hpp"
 #include "talus/dem/contact/linear.hpp"
@@ -43,6 +44,7 @@ class Stepper final : public StepperBase<D> {
   void prime() override {
     update_walls(true);
     rebuild();
+#pragma omp parallel num_threads(s_.threads)
     compute_forces();
   }
 
@@ -57,8 +59,14 @@ class Stepper final : public StepperBase<D> {
     s_.wall_motion_at_build = wall_displacement();
   }
 
+  // All threads run the whole step loop in one parallel region; the loops of
+  // a step are shared with `omp for`, the serial parts run on one thread.
   void advance(int64_t steps) override {
-    for (int64_t k = 0; k < steps; ++k) one_step();
+    error_ = nullptr;
+#pragma omp parallel num_threads(s_.threads)
+    for (int64_t k = 0; k < steps && !error_; ++k) one_step();
+    // Exceptions may not cross the parallel region: they are carried out here.
+    if (error_) std::rethrow_exception(error_);
   }
 
   double critical_time_step(double v_ref) const override {
@@ -89,34 +97,59 @@ class Stepper final : public StepperBase<D> {
   }
 
  private:
+  // One velocity-Verlet step; called by every thread of the team.
   void one_step() {
     auto& p = s_.particles;
     const double dt = s_.dt;
-    const int n = static_cast<int>(p.size());
     kick(0.5 * dt);
-#pragma omp parallel for schedule(static) num_threads(s_.threads) if (n > 4096)
-    for (int i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
-    s_.time = static_cast<double>(s_.step + 1) * dt;
-    const bool walls_changed = update_walls(false);
-    if (walls_changed ||
-        s_.neighbours.stale(p, (wall_displacement() - s_.wall_motion_at_build).cwiseAbs().maxCoeff()))
-      rebuild();
+    const int n = static_cast<int>(p.size());
+    double moved = 0.0;
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; ++i) {
+      p.x[i] += dt * p.v[i];
+      const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
+      moved = d2 <= moved ? moved : d2;  // also takes NaN, which forces a rebuild
+    }
+#pragma omp critical(talus_moved)
+    max_moved_ = moved <= max_moved_ ? max_moved_ : moved;
+#pragma omp barrier
+#pragma omp single
+    {
+      moved = max_moved_;
+      max_moved_ = 0.0;
+      s_.time = static_cast<double>(s_.step + 1) * dt;
+      const bool walls_changed = update_walls(false);
+      const double wall_moved =
+          (wall_displacement() - s_.wall_motion_at_build).cwiseAbs().maxCoeff();
+      const double half_skin = 0.5 * s_.skin;
+      try {
+        if (walls_changed || !(moved <= half_skin * half_skin) || wall_moved > half_skin)
+          rebuild();
+      } catch (...) {
+        error_ = std::current_exception();
+      }
+      prepare_wall_accumulators();
+    }
+    if (error_) return;
     compute_forces();
     kick(0.5 * dt);
-    kuen_.apply(p, dt);
-    if (s_.contact.lock_rotation)
-      for (auto& w : p.w) w = Space<D>::rot_zero();
-    for (auto& w : s_.walls) w.impulse += w.force * dt;
-    ++s_.step;
+#pragma omp single
+    {
+      kuen_.apply(p, dt);
+      for (auto& w : s_.walls) w.impulse += w.force * dt;
+      ++s_.step;
+    }
   }
 
-  // Half kick of velocity Verlet, with PFC's optional local damping.
+  // Half kick of velocity Verlet, with PFC's optional local damping. A locked
+  // rotation (Kuen's Model 1) keeps omega at zero.
   void kick(double h) {
     auto& p = s_.particles;
     const int n = static_cast<int>(p.size());
     const Vec g = s_.gravity;
     const double alpha = s_.contact.local_damping;
-#pragma omp parallel for schedule(static) num_threads(s_.threads) if (n > 4096)
+    const bool rotate = !s_.contact.lock_rotation;
+#pragma omp for schedule(static)
     for (int i = 0; i < n; ++i) {
       Vec f = p.f[i] + p.m[i] * g;
       Rot t = p.t[i];
@@ -129,7 +162,7 @@ class Stepper final : public StepperBase<D> {
         }
       }
       p.v[i] += (h * p.inv_m[i]) * f;
-      p.w[i] += (h * p.inv_I[i]) * t;
+      if (rotate) p.w[i] += (h * p.inv_I[i]) * t;
     }
   }
   static double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
@@ -235,7 +268,7 @@ class Stepper final : public StepperBase<D> {
   }
 
   // Kinematics and force of pair k; false when the pair does not touch.
-  bool pair_force(std::size_t k, PairResult<D>& out) {
+  TALUS_HOT bool pair_force(std::size_t k, PairResult<D>& out) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int i = nl.pairs[k].i, j = nl.pairs[k].j;
@@ -275,19 +308,25 @@ class Stepper final : public StepperBase<D> {
     return true;
   }
 
+  // Called by every thread of the team (or by one thread outside a region).
   void compute_forces() {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int n = static_cast<int>(p.size());
-    for (int i = 0; i < n; ++i) {
-      p.f[i].setZero();
-      p.t[i] = Space<D>::rot_zero();
-      p.contacts[i] = 0;
-      p.wall_contacts[i] = 0;
-    }
     const std::size_t np = nl.pairs.size();
+#pragma omp single
+    {
+      pair_touching_ = 0;
+      wall_touching_ = 0;
+      if (wall_acc_.empty()) prepare_wall_accumulators();
+    }
     int64_t touching = 0;
-    if (s_.threads <= 1) {
+    if (omp_get_num_threads() <= 1) {
+      for (int i = 0; i < n; ++i) {
+        p.f[i].setZero();
+        p.t[i] = Space<D>::rot_zero();
+        p.contacts[i] = 0;
+      }
       PairResult<D> r;
       for (std::size_t k = 0; k < np; ++k) {
         if (!pair_force(k, r)) continue;
@@ -303,93 +342,64 @@ class Stepper final : public StepperBase<D> {
     } else {
       // Race-free: forces per pair first, then each particle gathers its pairs
       // in pair order, so the sums are the same as with one thread.
+#pragma omp single
       results_.resize(np);
-#pragma omp parallel num_threads(s_.threads)
-      {
-#pragma omp for schedule(static) reduction(+ : touching)
-        for (std::size_t k = 0; k < np; ++k) {
-          results_[k].touching = pair_force(k, results_[k]);
-          touching += results_[k].touching;
-        }
 #pragma omp for schedule(static)
-        for (int i = 0; i < n; ++i) {
-          for (int q = nl.incidence_start[i]; q < nl.incidence_start[i + 1]; ++q) {
-            const int e = nl.incidence[q];
-            const auto& r = results_[e >> 1];
-            if (!r.touching) continue;
-            if (e & 1) {
-              p.f[i] -= r.f;
-              p.t[i] += r.tj;
-            } else {
-              p.f[i] += r.f;
-              p.t[i] += r.ti;
-            }
-            ++p.contacts[i];
-          }
-        }
+      for (std::size_t k = 0; k < np; ++k) {
+        results_[k].touching = pair_force(k, results_[k]);
+        touching += results_[k].touching;
       }
-    }
-    s_.pair_contacts = touching;
-    wall_forces();
-  }
-
-  void wall_forces() {
-    auto& p = s_.particles;
-    auto& nl = s_.neighbours;
-    const int n = static_cast<int>(p.size());
-    const int nw = static_cast<int>(s_.walls.size());
-    const int nt = std::max(1, s_.threads);
-    wall_acc_.assign(static_cast<std::size_t>(nt) * nw * 2, Vec3::Zero());
-    std::vector<Vec3> pivots(nw);
-    std::vector<bool> moving(nw);
-    for (int w = 0; w < nw; ++w) {
-      pivots[w] = s_.walls[w].pivot_at(s_.time);
-      moving[w] = s_.walls[w].moves();
-    }
-    int64_t touching = 0;
-#pragma omp parallel num_threads(nt) reduction(+ : touching)
-    {
-      Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * nw * 2;
 #pragma omp for schedule(static)
       for (int i = 0; i < n; ++i) {
-        for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
-          const int prim = nl.wall_prim[k];
-          const int w = s_.primitive_wall[prim];
-          geometry::Closest<D> c;
-          if (!active_[w] ||
-              !geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) ||
-              c.distance >= p.r[i]) {
-            nl.wall_history[k] = ContactHistory<D>{};
-            continue;
+        Vec f = Vec::Zero();
+        Rot t = Space<D>::rot_zero();
+        int c = 0;
+        for (int q = nl.incidence_start[i]; q < nl.incidence_start[i + 1]; ++q) {
+          const int e = nl.incidence[q];
+          const auto& r = results_[e >> 1];
+          if (!r.touching) continue;
+          if (e & 1) {
+            f -= r.f;
+            t += r.tj;
+          } else {
+            f += r.f;
+            t += r.ti;
           }
-          ContactKinematics<D> kin;
-          kin.n = c.normal;
-          kin.overlap = p.r[i] - c.distance;
-          const double ci = p.r[i] - 0.5 * kin.overlap;
-          kin.r_eff = p.r[i];
-          kin.m_eff = p.m[i];
-          kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
-          Vec vrel = p.v[i];
-          if (moving[w])
-            vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
-          kin.vn = vrel.dot(kin.n);
-          kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
-          kin.w_rel = p.w[i];
-          ContactForce<D> cf;
-          Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
-                         nl.wall_history[k], s_.dt, cf);
-          const Vec f = cf.fn * kin.n + cf.ft;
-          p.f[i] += f;
-          p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
-          ++p.wall_contacts[i];
-          ++touching;
-          const Vec3 f3 = Space<D>::to3(f);
-          acc[2 * w] -= f3;
-          acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots[w]).cross(f3);
+          ++c;
         }
+        p.f[i] = f;
+        p.t[i] = t;
+        p.contacts[i] = c;
       }
     }
-    s_.wall_contacts = touching;
+#pragma omp atomic
+    pair_touching_ += touching;
+    wall_forces();
+#pragma omp barrier
+#pragma omp single
+    {
+      s_.pair_contacts = pair_touching_;
+      s_.wall_contacts = wall_touching_;
+      sum_wall_accumulators();
+    }
+  }
+
+  // Per-thread sums of wall force and torque, reduced in thread order.
+  void prepare_wall_accumulators() {
+    const int nw = static_cast<int>(s_.walls.size());
+    const int nt = std::max(1, s_.threads);
+    wall_acc_.assign(static_cast<std::size_t>(nt) * nw * 2 + 1, Vec3::Zero());
+    pivots_.resize(nw);
+    moving_.resize(nw);
+    for (int w = 0; w < nw; ++w) {
+      pivots_[w] = s_.walls[w].pivot_at(s_.time);
+      moving_[w] = s_.walls[w].moves() ? 1 : 0;
+    }
+  }
+
+  void sum_wall_accumulators() {
+    const int nw = static_cast<int>(s_.walls.size());
+    const int nt = std::max(1, s_.threads);
     for (int w = 0; w < nw; ++w) {
       s_.walls[w].force.setZero();
       s_.walls[w].torque.setZero();
@@ -398,14 +408,67 @@ class Stepper final : public StepperBase<D> {
         s_.walls[w].torque += wall_acc_[(static_cast<std::size_t>(t) * nw + w) * 2 + 1];
       }
     }
+    std::fill(wall_acc_.begin(), wall_acc_.end(), Vec3::Zero());
+  }
+
+  void wall_forces() {
+    auto& p = s_.particles;
+    auto& nl = s_.neighbours;
+    const int n = static_cast<int>(p.size());
+    const int nw = static_cast<int>(s_.walls.size());
+    Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * nw * 2;
+    int64_t touching = 0;
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      p.wall_contacts[i] = 0;
+      for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
+        const int prim = nl.wall_prim[k];
+        const int w = s_.primitive_wall[prim];
+        geometry::Closest<D> c;
+        if (!active_[w] || !geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) ||
+            c.distance >= p.r[i]) {
+          nl.wall_history[k] = ContactHistory<D>{};
+          continue;
+        }
+        ContactKinematics<D> kin;
+        kin.n = c.normal;
+        kin.overlap = p.r[i] - c.distance;
+        const double ci = p.r[i] - 0.5 * kin.overlap;
+        kin.r_eff = p.r[i];
+        kin.m_eff = p.m[i];
+        kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
+        Vec vrel = p.v[i];
+        if (moving_[w])
+          vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
+        kin.vn = vrel.dot(kin.n);
+        kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
+        kin.w_rel = p.w[i];
+        ContactForce<D> cf;
+        Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
+                       nl.wall_history[k], s_.dt, cf);
+        const Vec f = cf.fn * kin.n + cf.ft;
+        p.f[i] += f;
+        p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
+        ++p.wall_contacts[i];
+        ++touching;
+        const Vec3 f3 = Space<D>::to3(f);
+        acc[2 * w] -= f3;
+        acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
+      }
+    }
+#pragma omp atomic
+    wall_touching_ += touching;
   }
 
   DemSystem<D>& s_;
   int n_materials_ = 0;
   std::vector<typename Model::Coeffs> coeffs_;
   std::vector<PairResult<D>> results_;
-  std::vector<Vec3> wall_acc_;
-  std::vector<bool> active_;
+  std::vector<Vec3> wall_acc_, pivots_;
+  std::vector<char> moving_, active_;
+  int64_t pair_touching_ = 0, wall_touching_ = 0;
+  double max_moved_ = 0.0;
+  std::exception_ptr error_;  // squared, largest displacement since the last build
   KuenRolling kuen_;
 };
 

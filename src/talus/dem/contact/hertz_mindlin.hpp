@@ -45,7 +45,7 @@ struct HertzMindlin {
 
   // The history holds the shear displacement xi.
   template <int D>
-  static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
                       double dt, ContactForce<D>& out) {
     constexpr double two_sqrt_5_6 = 1.8257418583505538;  // 2 sqrt(5/6)
     const double sqrt_rd = std::sqrt(k.r_eff * k.overlap);
@@ -95,7 +95,7 @@ struct ViscoelasticHertz {
 
   // The history holds the tangential spring xi_t.
   template <int D>
-  static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
                       double dt, ContactForce<D>& out) {
     const double sqrt_d = std::sqrt(k.overlap);
     const double rho = (4.0 / 3.0) * c.h.e_star * std::sqrt(k.r_eff);

@@ -39,7 +39,7 @@ struct ContactForce {
 // Removes the component of a tangential spring along the new normal, keeping its
 // length (the contact plane rotates with the particles).
 template <int D>
-inline typename Space<D>::Vec rotate_into_plane(const typename Space<D>::Vec& s,
+TALUS_HOT typename Space<D>::Vec rotate_into_plane(const typename Space<D>::Vec& s,
                                                 const typename Space<D>::Vec& n) {
   const double len2 = s.squaredNorm();
   if (len2 == 0.0) return s;

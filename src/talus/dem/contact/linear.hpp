@@ -27,7 +27,7 @@ struct LinearSpringDashpot {
 
   // The history holds the shear force itself (PFC's incremental form).
   template <int D>
-  static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
                       double dt, ContactForce<D>& out) {
     const double cn = 2.0 * c.beta * std::sqrt(k.m_eff * c.kn);
     double fn = c.kn * k.overlap - cn * k.vn;

@@ -14,7 +14,7 @@ struct NoRolling {
   struct Coeffs {};
   static Coeffs make(const ContactParams&, const PairCoefficients&) { return {}; }
   template <int D>
-  static void compute(const Coeffs&, const ContactKinematics<D>&, ContactHistory<D>&, double,
+  TALUS_HOT static void compute(const Coeffs&, const ContactKinematics<D>&, ContactHistory<D>&, double,
                       ContactForce<D>&) {}
 };
 
@@ -32,7 +32,7 @@ struct EpsdRolling {
   }
 
   template <int D>
-  static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
                       double dt, ContactForce<D>& out) {
     if (c.mu_r <= 0.0) return;
     using Rot = typename Space<D>::Rot;
@@ -69,7 +69,7 @@ struct ComposedContact {
     return {Law::make(cp, a, b, pc), Rolling::make(cp, pc)};
   }
   template <int D>
-  static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
                       double dt, ContactForce<D>& out) {
     Law::compute(c.law, k, h, dt, out);
     Rolling::compute(c.roll, k, h, dt, out);
