@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "talus/io/scenario.hpp"
 
@@ -170,7 +172,7 @@ TEST(Scenario, Full3dFileParsesToTheTypedValuesAndDefaults) {
   EXPECT_NEAR(s.materials[1].friction, 1.0, 1e-12);  // tan(45 degrees)
 
   ASSERT_EQ(s.walls.size(), 4u);
-  EXPECT_EQ(s.walls[0].name, "wall0");  // default name: wall<index>
+  EXPECT_EQ(s.walls[0].name, "wall0");           // default name: wall<index>
   expect_vec(s.walls[0].normal, Vec3::UnitZ());  // [0, 0, 2] normalised
   ASSERT_EQ(s.walls[1].vertices.size(), 3u);
   expect_vec(s.walls[1].vertices[2], Vec3(0, 1, 0.5));
@@ -235,10 +237,10 @@ void expect_same(const DemScenario& a, const DemScenario& b) {
   EXPECT_EQ(ca.friction_rule, cb.friction_rule);
   EXPECT_EQ(ca.lock_rotation, cb.lock_rotation);
   EXPECT_EQ(ca.dashpot_may_pull, cb.dashpot_may_pull);
-  for (auto field : {&dem::ContactParams::local_damping, &dem::ContactParams::tangential_damping,
-                     &dem::ContactParams::kuen_wall_depth, &dem::ContactParams::kuen_particle_factor,
-                     &dem::ContactParams::epsd_stiffness_factor,
-                     &dem::ContactParams::epsd_damping_ratio}) {
+  for (auto field :
+       {&dem::ContactParams::local_damping, &dem::ContactParams::tangential_damping,
+        &dem::ContactParams::kuen_wall_depth, &dem::ContactParams::kuen_particle_factor,
+        &dem::ContactParams::epsd_stiffness_factor, &dem::ContactParams::epsd_damping_ratio}) {
     EXPECT_DOUBLE_EQ(ca.*field, cb.*field);
   }
   ASSERT_EQ(ca.pairs.size(), cb.pairs.size());
@@ -253,11 +255,12 @@ void expect_same(const DemScenario& a, const DemScenario& b) {
   ASSERT_EQ(a.materials.size(), b.materials.size());
   for (std::size_t i = 0; i < a.materials.size(); ++i) {
     EXPECT_EQ(a.materials[i].name, b.materials[i].name);
-    for (auto field : {&dem::MaterialParams::density, &dem::MaterialParams::youngs_modulus,
-                       &dem::MaterialParams::poisson_ratio, &dem::MaterialParams::restitution,
-                       &dem::MaterialParams::friction, &dem::MaterialParams::rolling_friction,
-                       &dem::MaterialParams::normal_stiffness, &dem::MaterialParams::shear_stiffness,
-                       &dem::MaterialParams::damping_ratio, &dem::MaterialParams::dissipation}) {
+    for (auto field :
+         {&dem::MaterialParams::density, &dem::MaterialParams::youngs_modulus,
+          &dem::MaterialParams::poisson_ratio, &dem::MaterialParams::restitution,
+          &dem::MaterialParams::friction, &dem::MaterialParams::rolling_friction,
+          &dem::MaterialParams::normal_stiffness, &dem::MaterialParams::shear_stiffness,
+          &dem::MaterialParams::damping_ratio, &dem::MaterialParams::dissipation}) {
       EXPECT_DOUBLE_EQ(a.materials[i].*field, b.materials[i].*field);
     }
   }
@@ -307,11 +310,11 @@ void expect_same(const DemScenario& a, const DemScenario& b) {
     expect_vec(sa.box_max, sb.box_max);
     ASSERT_EQ(sa.polygon.size(), sb.polygon.size());
     for (std::size_t k = 0; k < sa.polygon.size(); ++k) expect_vec(sa.polygon[k], sb.polygon[k]);
-    for (auto field : {&dem::ParticleSourceParams::spacing, &dem::ParticleSourceParams::radius,
-                       &dem::ParticleSourceParams::radius_min, &dem::ParticleSourceParams::radius_max,
-                       &dem::ParticleSourceParams::porosity,
-                       &dem::ParticleSourceParams::packing_fraction,
-                       &dem::ParticleSourceParams::shrink}) {
+    for (auto field :
+         {&dem::ParticleSourceParams::spacing, &dem::ParticleSourceParams::radius,
+          &dem::ParticleSourceParams::radius_min, &dem::ParticleSourceParams::radius_max,
+          &dem::ParticleSourceParams::porosity, &dem::ParticleSourceParams::packing_fraction,
+          &dem::ParticleSourceParams::shrink}) {
       EXPECT_DOUBLE_EQ(sa.*field, sb.*field);
     }
     EXPECT_EQ(sa.settle.enabled, sb.settle.enabled);
@@ -362,6 +365,22 @@ TEST(Scenario, JsonHasTheResolvedValuesWithAnglesInDegrees) {
   EXPECT_EQ(j3["run"]["time_step"], "auto");
   EXPECT_NEAR(j3["walls"][3]["motion"]["phase"].get<double>(), 90.0, 1e-10);
   EXPECT_EQ(j3["particles"][1]["count"], 2000);
+}
+
+TEST(Scenario, ExampleInTheFormatDocumentationIsValid) {
+  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/docs/scenario-format.md");
+  ASSERT_TRUE(in);
+  std::stringstream doc;
+  doc << in.rdbuf();
+  const std::string text = doc.str();
+  const auto begin = text.find("```toml\n");
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = text.find("```", begin + 8);
+  const std::string example = text.substr(begin + 8, end - begin - 8);
+  const DemScenario s = parse_dem_scenario(load_scenario_text(example, "example.toml"));
+  EXPECT_EQ(s.name, "mini_flume");
+  EXPECT_EQ(s.walls.size(), 2u);
+  EXPECT_NEAR(s.materials[0].friction, 0.277, 5e-4);  // Kuen: 15.5 degrees is mu = 0.277
 }
 
 }  // namespace

@@ -104,10 +104,10 @@ std::string write_temp(const std::string& name, const std::string& text) {
 }
 
 struct BadCase {
-  std::string name;     // also the file name, so messages can be checked for it
+  std::string name;  // also the file name, so messages can be checked for it
   std::string text;
-  std::string key;      // must appear quoted: 'key' (or after --set)
-  std::string expected; // a fragment of the message
+  std::string key;       // must appear quoted: 'key' (or after --set)
+  std::string expected;  // a fragment of the message
 };
 
 std::ostream& operator<<(std::ostream& out, const BadCase& c) { return out << c.name; }
@@ -143,8 +143,11 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected a positive number, got 0"},
         BadCase{"density_as_text", edit(kBase3d, kDensity, "density = \"heavy\" # <-"), "density",
                 "expected a positive number, got \"heavy\""},
-        BadCase{"density_missing_for_particles", edit(kBase3d, "[[materials]]\nname = \"glass\"\n"
-                "density = 2500\n", "[[materials]] # <-\nname = \"glass\"\n"),
+        BadCase{"density_missing_for_particles",
+                edit(kBase3d,
+                     "[[materials]]\nname = \"glass\"\n"
+                     "density = 2500\n",
+                     "[[materials]] # <-\nname = \"glass\"\n"),
                 "density", "used by particles"},
         BadCase{"typo_in_required_key", edit(kBase3d, "friction = 0.5", "frictoin = 0.5 # <-"),
                 "frictoin", "did you mean 'friction'?"},
@@ -159,8 +162,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"unknown_key_without_suggestion",
                 edit(kBase3d, "[[walls]]", "[[walls]]\ncolour = \"red\" # <-"), "colour",
                 "unknown key (known keys here:"},
-        BadCase{"missing_duration", edit(edit(kBase3d, "duration = 0.1\n", ""), "[run]", "[run] # <-"),
-                "duration", "[run] 'duration': missing (expected a positive number)"},
+        BadCase{"missing_duration",
+                edit(edit(kBase3d, "duration = 0.1\n", ""), "[run]", "[run] # <-"), "duration",
+                "[run] 'duration': missing (expected a positive number)"},
         BadCase{"missing_method", edit(kBase3d, "method = \"dem\"\n", ""), "method", "missing"},
         BadCase{"future_method", edit(kBase3d, "method = \"dem\"", "method = \"runout\" # <-"),
                 "method", "not implemented yet"},
@@ -185,21 +189,24 @@ INSTANTIATE_TEST_SUITE_P(
                      "[[contact.pairs]]\nmaterials = [\"glass\", \"steel\"] # <-\nfriction = 0.1\n"
                      "[[materials]]"),
                 "materials", "no material named 'steel'"},
-        BadCase{"duplicate_material",
-                edit(kBase3d, "[[walls]]",
-                     "[[materials]]\nname = \"glass\" # <-\nyoungs_modulus = 1e7\nrestitution = 0.5\n"
-                     "friction = 0.1\n[[walls]]"),
-                "name", "defined twice (first at line 8)"},
+        BadCase{
+            "duplicate_material",
+            edit(kBase3d, "[[walls]]",
+                 "[[materials]]\nname = \"glass\" # <-\nyoungs_modulus = 1e7\nrestitution = 0.5\n"
+                 "friction = 0.1\n[[walls]]"),
+            "name", "defined twice (first at line 8)"},
         BadCase{"both_frictions",
                 edit(kBase3d, "friction = 0.5", "friction = 0.5\nfriction_angle = 30 # <-"),
                 "friction_angle", "not both"},
         BadCase{"friction_angle_90", edit(kBase3d, "friction = 0.5", "friction_angle = 90 # <-"),
                 "friction_angle", "expected a number in [0, 90), got 90"},
-        BadCase{"hertz_poisson", edit(kBase3d, kDensity, "density = 2500\npoisson_ratio = 0.5 # <-"),
+        BadCase{"hertz_poisson",
+                edit(kBase3d, kDensity, "density = 2500\npoisson_ratio = 0.5 # <-"),
                 "poisson_ratio", "expected a number in (-1, 0.5), got 0.5"},
-        BadCase{"hertz_needs_restitution",
-                edit(edit(kBase3d, "restitution = 0.9\n", ""), "[[materials]]", "[[materials]] # <-"),
-                "restitution", "contact.model = \"hertz_mindlin\" needs it"},
+        BadCase{
+            "hertz_needs_restitution",
+            edit(edit(kBase3d, "restitution = 0.9\n", ""), "[[materials]]", "[[materials]] # <-"),
+            "restitution", "contact.model = \"hertz_mindlin\" needs it"},
         BadCase{"viscoelastic_needs_youngs",
                 edit(edit(edit(kBase3d, "youngs_modulus = 1e7\n", ""), "[[materials]]",
                           "[[materials]] # <-"),
@@ -215,9 +222,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"linear_damping_ratio_1",
                 edit(kBase2d, "damping_ratio = 0.3", "damping_ratio = 1 # <-"), "damping_ratio",
                 "expected a number in [0, 1), got 1"},
-        BadCase{"segment_in_3d",
-                edit(kBase3d, "type = \"plane\"", "type = \"segment\" # <-"), "type",
-                "\"segment\" walls need run.dimension = 2"},
+        BadCase{"segment_in_3d", edit(kBase3d, "type = \"plane\"", "type = \"segment\" # <-"),
+                "type", "\"segment\" walls need run.dimension = 2"},
         BadCase{"plane_in_2d", edit(kBase2d, "type = \"segment\"", "type = \"plane\" # <-"), "type",
                 "\"plane\" walls need run.dimension = 3"},
         BadCase{"z_in_2d", edit(kBase2d, "b = [1, 0]", "b = [1, 0, 0.5] # <-"), "b",
@@ -225,16 +231,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"vector_of_4", edit(kBase3d, "point = [0, 0, 0]", "point = [0, 0, 0, 1] # <-"),
                 "point", "expected [x, y] or [x, y, z], got [0, 0, 0, 1]"},
         BadCase{"key_of_other_wall_type",
-                edit(kBase3d, "normal = [0, 0, 1]", "normal = [0, 0, 1]\nradius = 1 # <-"), "radius",
-                "not used by walls of type \"plane\""},
+                edit(kBase3d, "normal = [0, 0, 1]", "normal = [0, 0, 1]\nradius = 1 # <-"),
+                "radius", "not used by walls of type \"plane\""},
         BadCase{"motion_stop_before_start",
                 edit(kBase3d, "normal = [0, 0, 1]",
                      "normal = [0, 0, 1]\nmotion = { start = 1.0, stop = 0.5 } # <-"),
                 "stop", "[walls.motion] 'stop': expected a time after start = 1 s, got 0.5"},
-        BadCase{"missing_mesh_file",
-                edit(kBase3d, "type = \"plane\"\nmaterial = \"glass\"\npoint = [0, 0, 0]\nnormal = [0, 0, 1]",
-                     "type = \"mesh\"\nmaterial = \"glass\"\nfile = \"nope.stl\" # <-"),
-                "file", "no such file"},
+        BadCase{
+            "missing_mesh_file",
+            edit(kBase3d,
+                 "type = \"plane\"\nmaterial = \"glass\"\npoint = [0, 0, 0]\nnormal = [0, 0, 1]",
+                 "type = \"mesh\"\nmaterial = \"glass\"\nfile = \"nope.stl\" # <-"),
+            "file", "no such file"},
         BadCase{"negative_particle_radius", edit(kBase3d, "radius = 0.01", "radius = -0.01 # <-"),
                 "radius", "[[particles.list]] 'radius': expected a positive number, got -0.01"},
         BadCase{"radius_min_above_max",
@@ -243,9 +251,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"porosity_above_1",
                 with_source(edit(kFill3d, "porosity = 0.4", "porosity = 1.2 # <-")), "porosity",
                 "expected a number in (0, 1), got 1.2"},
-        BadCase{"porosity_and_count",
-                with_source(edit(kFill3d, "porosity = 0.4", "porosity = 0.4\ncount = 10 # <-")),
-                "count", "exactly one of 'porosity' or 'count'"},
+        BadCase{"zero_count",
+                with_source(edit(kFill3d, "porosity = 0.4", "porosity = 0.4\ncount = 0 # <-")),
+                "count", "expected a positive integer, got 0"},
+        BadCase{"fill_without_porosity",
+                with_source(edit(edit(kFill3d, "porosity = 0.4\n", "count = 10\n"), "[[particles]]",
+                                 "[[particles]] # <-")),
+                "porosity", "missing (expected a number in (0, 1))"},
         BadCase{"polygon_in_3d",
                 with_source(edit(kFill3d, "box = { min = [0, 0, 0], max = [1, 1, 1] }",
                                  "polygon = [[0, 0], [1, 0], [0, 1]] # <-")),

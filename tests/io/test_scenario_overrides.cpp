@@ -27,12 +27,12 @@ std::string error_with(const std::string& file, const std::vector<std::string>& 
 }
 
 TEST(Overrides, ReplaceValuesOfEveryKind) {
-  const dem::DemScenario s = parse_with(
-      kFull2d, {"run.duration=0.1", "name=\"custom run\"", "contact.friction_rule=min",
-                "materials.1.friction=0.25", "run.gravity=[0, -1]", "run.time_step=auto",
-                "walls.2.motion.velocity=[0, 3]", "output.snapshots=true", "run.seed = 7",
-                "run.domain.max.1=2", "particles.1.list.0.radius=2e-3",
-                "materials.0.friction_angle=45"});
+  const dem::DemScenario s =
+      parse_with(kFull2d, {"run.duration=0.1", "name=\"custom run\"", "contact.friction_rule=min",
+                           "materials.1.friction=0.25", "run.gravity=[0, -1]", "run.time_step=auto",
+                           "walls.2.motion.velocity=[0, 3]", "output.snapshots=true",
+                           "run.seed = 7", "run.domain.max.1=2", "particles.1.list.0.radius=2e-3",
+                           "materials.0.friction_angle=45"});
   EXPECT_DOUBLE_EQ(s.run.duration, 0.1);
   EXPECT_EQ(s.name, "custom run");
   EXPECT_EQ(s.contact.friction_rule, dem::PairRule::Min);  // unquoted: taken as a string
@@ -73,9 +73,9 @@ TEST(Overrides, UnknownTopLevelTable) {
 
 TEST(Overrides, BadValueIsReportedAsComingFromSet) {
   const std::string message = error_with(kFull2d, {"materials.0.density=-3"});
-  EXPECT_NE(message.find(kFull2d +
-                         ": --set materials.0.density: expected a positive number, got -3"),
-            std::string::npos)
+  EXPECT_NE(
+      message.find(kFull2d + ": --set materials.0.density: expected a positive number, got -3"),
+      std::string::npos)
       << message;
 }
 
@@ -105,7 +105,8 @@ TEST(Overrides, MalformedOverridesNameTheFileAndTheOverride) {
            {"materials.5.friction=0.3",
             "--set materials.5.friction=0.3: 'materials' has 2 entries, there is no entry '5'"},
            {"materials.x.friction=0.3", "there is no entry 'x'"},
-           {"run.duration.x=1", "--set run.duration.x=1: 'run.duration' is a value, not a table"}}) {
+           {"run.duration.x=1",
+            "--set run.duration.x=1: 'run.duration' is a value, not a table"}}) {
     try {
       load_scenario_file(kFull2d, {c.set});
       ADD_FAILURE() << "no error for --set " << c.set;

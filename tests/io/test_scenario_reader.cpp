@@ -77,8 +77,9 @@ TEST(TomlReader, UnreadKeysAreReportedWithTheirLine) {
   r.required_number("x");
   r.number("flog", 0.0);  // asked for, but the file says "flag"
   // The first unread key in file order is n (line 2); nothing close to it.
-  EXPECT_NE(error_of([&] { r.finish(); }).find("t.toml:2: 'n': unknown key (known keys here: flog, "
-                                               "title, x)"),
+  EXPECT_NE(error_of([&] { r.finish(); })
+                .find("t.toml:2: 'n': unknown key (known keys here: flog, "
+                      "title, x)"),
             std::string::npos);
   for (auto key : {"n", "v2", "v3", "angle", "kind", "sub", "items"}) r.mark_read(key);
   EXPECT_EQ(error_of([&] { r.finish(); }), "t.toml:4: 'flag': unknown key; did you mean 'flog'?");
@@ -89,8 +90,10 @@ TEST(TomlReader, WrongTypesNameLineKeyAndValue) {
   TomlReader r(table, "t.toml");
   EXPECT_EQ(error_of([&] { r.required_number("title"); }),
             "t.toml:1: 'title': expected a number, got \"t\"");
-  EXPECT_EQ(error_of([&] { r.required_integer("x"); }), "t.toml:3: 'x': expected an integer, got 2.5");
-  EXPECT_EQ(error_of([&] { r.boolean("n", false); }), "t.toml:2: 'n': expected true or false, got 3");
+  EXPECT_EQ(error_of([&] { r.required_integer("x"); }),
+            "t.toml:3: 'x': expected an integer, got 2.5");
+  EXPECT_EQ(error_of([&] { r.boolean("n", false); }),
+            "t.toml:2: 'n': expected true or false, got 3");
   EXPECT_EQ(error_of([&] { r.required_vec3("x"); }),
             "t.toml:3: 'x': expected [x, y] or [x, y, z], got 2.5");
   const EnumNames<int> names = {{"alpha", 0}, {"gamma", 1}};
@@ -119,7 +122,9 @@ TEST(TomlReader, RejectNamesTheKeyThatDoesNotApply) {
   const toml::table table = parse_text("type = \"a\"\nradius = 1\n");
   TomlReader r(table, "t.toml");
   r.required_string("type");
-  EXPECT_EQ(error_of([&] { r.reject({"radius", "length"}, "not used by type \"a\""); }),
+  EXPECT_EQ(error_of([&] {
+              r.reject({"radius", "length"}, "not used by type \"a\"");
+            }),
             "t.toml:2: 'radius': not used by type \"a\"");
 }
 
@@ -134,9 +139,9 @@ TEST(TomlReader, ClosestNameFindsTyposOnly) {
 
 TEST(TomlReader, OverridesParseValuesAsTomlAndFallBackToStrings) {
   toml::table table = toml::parse("[run]\nduration = 1.0\n[[m]]\nf = 0.5\n[[m]]\nf = 0.6\n");
-  apply_overrides(table, {"run.duration=2", "run.model=linear model", "run.g=[0, -9.81]",
-                          "run.flag=true", "run.box={min = [0, 0], max = [1, 1]}", "m.1.f=0.7",
-                          "new.key=\"quoted\""});
+  apply_overrides(table,
+                  {"run.duration=2", "run.model=linear model", "run.g=[0, -9.81]", "run.flag=true",
+                   "run.box={min = [0, 0], max = [1, 1]}", "m.1.f=0.7", "new.key=\"quoted\""});
   EXPECT_EQ(table.at_path("run.duration").value<std::int64_t>(), 2);
   EXPECT_EQ(table.at_path("run.model").value<std::string>(), "linear model");
   EXPECT_DOUBLE_EQ(*table.at_path("run.g[1]").value<double>(), -9.81);

@@ -40,7 +40,7 @@ struct DemSystem {
   int64_t pair_contacts = 0;
   int64_t wall_contacts = 0;
 
-  bool has_domain() const { return (domain_max - domain_min).minCoeff() > 0.0; }
+  bool has_domain() const { return (domain_max - domain_min).template head<D>().minCoeff() > 0.0; }
   int material_index(const std::string& name) const;
 };
 

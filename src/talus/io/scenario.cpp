@@ -36,19 +36,23 @@ dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   if (r.is_string("time_step")) {
     r.required_enum<int>("time_step", {{"auto", 0}});
   } else {
-    if (r.has("time_step") && !r.is_number("time_step")) {
-      r.expect(false, "time_step", "a positive number (s) or \"auto\"");
-    }
-    run.time_step = number_in(r, "time_step", 0.0, positive());
+    const bool number = !r.has("time_step") || r.is_number("time_step");
+    r.expect(number, "time_step", "a positive number (s) or \"auto\"");
+    run.time_step = r.number("time_step", 0.0);
+    r.expect(run.time_step >= 0.0 && (run.time_step > 0.0 || !r.has("time_step")), "time_step",
+             "a positive number (s) or \"auto\"");
   }
-  run.safety_factor = number_in(r, "safety_factor", run.safety_factor, between(0.0, 1.0, true, false));
-  run.gravity = detail::point_or(r, "gravity", ctx, -9.81 * detail::up(ctx));
-  detail::read_box(r, "domain", ctx, run.domain_min, run.domain_max);
+  run.safety_factor =
+      number_in(r, "safety_factor", run.safety_factor, between(0.0, 1.0, true, false));
+  const Vec3 down = ctx.dimension == 2 ? Vec3(0.0, -9.81, 0.0) : Vec3(0.0, 0.0, -9.81);
+  run.gravity = detail::point_or(r, "gravity", ctx, down);
+  // No domain: particles are never removed (an empty box, see dem/system.hpp).
+  if (r.has("domain")) detail::read_box(r, "domain", ctx, run.domain_min, run.domain_max);
   run.skin = number_in(r, "skin", 0.0, non_negative());
   const auto seed = r.integer("seed", run.seed);
   r.expect(seed >= 0 && seed <= UINT_MAX, "seed", "an integer in [0, 4294967295]");
   run.seed = static_cast<unsigned>(seed);
-  run.ke_blowup_factor = number_in(r, "ke_blowup_factor", run.ke_blowup_factor, positive());
+  run.ke_blowup_factor = number_in(r, "ke_blowup_factor", run.ke_blowup_factor, non_negative());
   r.finish();
   return run;
 }
@@ -66,7 +70,8 @@ dem::ContactParams read_contact(TomlReader& r) {
   c.kuen_wall_depth = number_in(r, "kuen_wall_depth", c.kuen_wall_depth, positive());
   c.kuen_particle_factor =
       number_in(r, "kuen_particle_factor", c.kuen_particle_factor, between(0.0, 1.0, false, false));
-  c.epsd_stiffness_factor = number_in(r, "epsd_stiffness_factor", c.epsd_stiffness_factor, positive());
+  c.epsd_stiffness_factor =
+      number_in(r, "epsd_stiffness_factor", c.epsd_stiffness_factor, positive());
   c.epsd_damping_ratio = number_in(r, "epsd_damping_ratio", c.epsd_damping_ratio, non_negative());
   return c;
 }
@@ -129,7 +134,8 @@ ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
   return file;
 }
 
-ScenarioFile load_scenario_file(const std::string& path, const std::vector<std::string>& overrides) {
+ScenarioFile load_scenario_file(const std::string& path,
+                                const std::vector<std::string>& overrides) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open the scenario file", path));
   std::ostringstream text;
@@ -180,7 +186,8 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   }
 
   std::vector<TomlReader> sources = root.tables("particles");
-  if (sources.empty()) root.fail("particles", "missing: at least one [[particles]] table is needed");
+  if (sources.empty())
+    root.fail("particles", "missing: at least one [[particles]] table is needed");
   for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
   check_densities(s, material_readers);
 

@@ -1,9 +1,9 @@
 #pragma once
 // Scenario files: one TOML file per run, parsed and fully validated before
 // anything runs. The format is documented key by key in docs/scenario-format.md.
-#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>

@@ -1,10 +1,9 @@
 #pragma once
 // Internals shared by the parts of the DEM scenario reader and writer
 // (scenario*.cpp). Not part of the public API.
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,8 +20,9 @@ inline const EnumNames<dem::ContactModel> kContactModels = {
     {"linear", dem::ContactModel::Linear},
     {"hertz_mindlin", dem::ContactModel::HertzMindlin},
     {"viscoelastic_hertz", dem::ContactModel::ViscoelasticHertz}};
-inline const EnumNames<dem::RollingModel> kRollingModels = {
-    {"none", dem::RollingModel::None}, {"epsd", dem::RollingModel::Epsd}, {"kuen", dem::RollingModel::Kuen}};
+inline const EnumNames<dem::RollingModel> kRollingModels = {{"none", dem::RollingModel::None},
+                                                            {"epsd", dem::RollingModel::Epsd},
+                                                            {"kuen", dem::RollingModel::Kuen}};
 inline const EnumNames<dem::PairRule> kPairRules = {{"max", dem::PairRule::Max},
                                                     {"min", dem::PairRule::Min},
                                                     {"harmonic", dem::PairRule::Harmonic},
@@ -31,11 +31,12 @@ inline const EnumNames<dem::WallKind> kWallKinds = {
     {"segment", dem::WallKind::Segment}, {"arc", dem::WallKind::Arc},
     {"plane", dem::WallKind::Plane},     {"triangle", dem::WallKind::Triangle},
     {"mesh", dem::WallKind::Mesh},       {"cylinder", dem::WallKind::Cylinder}};
-inline const EnumNames<dem::SourceKind> kSourceKinds = {{"list", dem::SourceKind::List},
-                                                        {"lattice", dem::SourceKind::Lattice},
-                                                        {"random_fill", dem::SourceKind::RandomFill},
-                                                        {"grow", dem::SourceKind::Grow},
-                                                        {"file", dem::SourceKind::File}};
+inline const EnumNames<dem::SourceKind> kSourceKinds = {
+    {"list", dem::SourceKind::List},
+    {"lattice", dem::SourceKind::Lattice},
+    {"random_fill", dem::SourceKind::RandomFill},
+    {"grow", dem::SourceKind::Grow},
+    {"file", dem::SourceKind::File}};
 inline const std::vector<std::string> kJitterNames = {"none", "peer"};
 
 template <typename E>
@@ -73,7 +74,8 @@ double required_number_in(TomlReader& r, std::string_view key, Interval range);
 Vec3 required_point(TomlReader& r, std::string_view key, const DemContext& ctx);
 Vec3 point_or(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& fallback);
 // A non-zero vector, normalised.
-Vec3 unit_vector_or(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& fallback);
+Vec3 unit_vector_or(TomlReader& r, std::string_view key, const DemContext& ctx,
+                    const Vec3& fallback);
 // An angular velocity in rad/s: in 2D a number (about z) or [0, 0, w].
 Vec3 spin_or_zero(TomlReader& r, std::string_view key, const DemContext& ctx);
 // A box {min = [..], max = [..]} with min < max in every used coordinate.

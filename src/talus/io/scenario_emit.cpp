@@ -57,9 +57,10 @@ std::string quoted(const std::string& s) {
 }
 
 std::string key_text(const std::string& key) {
-  const bool bare = !key.empty() && key.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
-                                                          "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") ==
-                                        std::string::npos;
+  const bool bare =
+      !key.empty() && key.find_first_not_of(
+                          "abcdefghijklmnopqrstuvwxyz"
+                          "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == std::string::npos;
   return bare ? key : quoted(key);
 }
 
@@ -68,7 +69,7 @@ std::string value_text(const Json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number_integer()) return fmt::format("{}", v.get<std::int64_t>());
   if (v.is_number_float()) {
-    const double x = v.get<double>();
+    const double x = v.get<double>() + 0.0;  // -0.0 written as 0.0
     if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
     if (std::isnan(x)) return "nan";
     std::string text = fmt::format("{}", x);  // shortest round-trip digits

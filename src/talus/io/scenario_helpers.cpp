@@ -19,7 +19,8 @@ std::string Interval::describe() const {
     if (low == 0.0) return low_open ? "a positive number" : "a number >= 0";
     return fmt::format("a number {} {}", low_open ? ">" : ">=", low);
   }
-  return fmt::format("a number in {}{}, {}{}", low_open ? "(" : "[", low, high, high_open ? ")" : "]");
+  return fmt::format("a number in {}{}, {}{}", low_open ? "(" : "[", low, high,
+                     high_open ? ")" : "]");
 }
 
 Interval positive() { return {0.0, std::numeric_limits<double>::infinity(), true, true}; }
@@ -47,7 +48,8 @@ double required_number_in(TomlReader& r, std::string_view key, Interval range) {
 namespace {
 Vec3 checked_point(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& v) {
   if (ctx.dimension == 2 && v.z() != 0.0) {
-    r.fail(key, fmt::format("expected [x, y] in a 2D run (run.dimension = 2), got {}", r.text(key)));
+    r.fail(key,
+           fmt::format("expected [x, y] in a 2D run (run.dimension = 2), got {}", r.text(key)));
   }
   return v;
 }
@@ -97,7 +99,8 @@ std::string required_file(TomlReader& r, std::string_view key, const DemContext&
   const std::filesystem::path given = r.required_string(key);
   r.expect(!given.empty(), key, "a file name");
   const std::filesystem::path path =
-      std::filesystem::absolute(given.is_absolute() ? given : ctx.folder / given).lexically_normal();
+      std::filesystem::absolute(given.is_absolute() ? given : ctx.folder / given)
+          .lexically_normal();
   if (!std::filesystem::is_regular_file(path)) {
     r.fail(key, fmt::format("no such file: {}", path.string()));
   }

@@ -11,7 +11,8 @@ namespace talus::io::detail {
 namespace {
 
 // A Coulomb coefficient given either directly or as an angle in degrees.
-std::optional<double> read_friction(TomlReader& r, std::string_view key, std::string_view angle_key) {
+std::optional<double> read_friction(TomlReader& r, std::string_view key,
+                                    std::string_view angle_key) {
   const auto mu = optional_number_in(r, key, non_negative());
   const auto phi = optional_number_in(r, angle_key, between(0.0, 90.0, false, true));
   if (mu && phi) {
@@ -25,7 +26,7 @@ void require(TomlReader& r, std::string_view key, bool present, dem::ContactMode
              std::string_view expected) {
   if (present) return;
   r.missing(key, fmt::format("missing: contact.model = \"{}\" needs it (expected {})",
-                          name_of(kContactModels, model), expected));
+                             name_of(kContactModels, model), expected));
 }
 
 dem::MaterialParams read_material(TomlReader& r, dem::ContactModel model) {
@@ -104,11 +105,12 @@ std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext&
              "'restitution' for this pair");
     }
     for (const dem::PairOverride& other : pairs) {
-      const bool same = (other.material_a == pair.material_a && other.material_b == pair.material_b) ||
-                        (other.material_a == pair.material_b && other.material_b == pair.material_a);
+      const bool same =
+          (other.material_a == pair.material_a && other.material_b == pair.material_b) ||
+          (other.material_a == pair.material_b && other.material_b == pair.material_a);
       if (same) {
-        r.fail("materials", fmt::format("the pair '{}'-'{}' is given twice", pair.material_a,
-                                        pair.material_b));
+        r.fail("materials",
+               fmt::format("the pair '{}'-'{}' is given twice", pair.material_a, pair.material_b));
       }
     }
     r.finish();

@@ -12,7 +12,7 @@ namespace {
 using dem::SourceKind;
 
 const std::vector<std::string_view> kSourceKeys = {
-    "list",  "box",    "spacing",  "radius",           "jitter", "polygon", "radius_min",
+    "list",       "box",      "spacing",          "radius", "jitter", "polygon", "radius_min",
     "radius_max", "porosity", "packing_fraction", "shrink", "count",  "file"};
 
 dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_material,
@@ -95,7 +95,8 @@ dem::SettleParams read_settle(TomlReader& r) {
 void read_kind(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ctx) {
   switch (s.kind) {
     case SourceKind::List: {
-      for (TomlReader& p : r.tables("list")) s.particles.push_back(read_particle(p, s.material, ctx));
+      for (TomlReader& p : r.tables("list"))
+        s.particles.push_back(read_particle(p, s.material, ctx));
       if (s.particles.empty()) {
         r.missing("list", "missing: a \"list\" source needs at least one [[particles.list]] entry");
       }
@@ -116,14 +117,9 @@ void read_kind(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ct
     case SourceKind::RandomFill:
       read_region(r, s, ctx);
       read_radius_range(r, s);
+      // The target porosity; the count, when given, replaces N = A(1-n)/(pi rbar^2).
+      s.porosity = required_number_in(r, "porosity", between(0.0, 1.0, true, true));
       s.count = read_count(r);
-      if (r.has("porosity") && s.count) {
-        r.fail("count", "expected exactly one of 'porosity' or 'count', not both");
-      }
-      if (!r.has("porosity") && !s.count) {
-        r.missing("porosity", "missing (expected 'porosity' in (0, 1) or a particle 'count')");
-      }
-      s.porosity = number_in(r, "porosity", 0.0, between(0.0, 1.0, true, true));
       s.shrink = number_in(r, "shrink", 0.0, between(0.0, 1.0, false, true));
       break;
     case SourceKind::Grow:
@@ -145,12 +141,14 @@ dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx) {
   dem::ParticleSourceParams s;
   s.kind = r.required_enum("type", kSourceKinds);
   // A list may name the material per particle instead.
-  if (s.kind == SourceKind::List) s.material = r.string("material", "");
-  else s.material = r.required_string("material");
+  if (s.kind == SourceKind::List)
+    s.material = r.string("material", "");
+  else
+    s.material = r.required_string("material");
   if (!s.material.empty()) check_material(r, "material", s.material, ctx);
   read_kind(r, s, ctx);
-  r.reject(kSourceKeys, fmt::format("not used by particles of type \"{}\"",
-                                    name_of(kSourceKinds, s.kind)));
+  r.reject(kSourceKeys,
+           fmt::format("not used by particles of type \"{}\"", name_of(kSourceKinds, s.kind)));
   s.settle = read_settle(r);
   r.finish();
   return s;

@@ -12,8 +12,8 @@ using dem::WallKind;
 
 // The keys each wall type reads, to say which type a stray key belongs to.
 const std::vector<std::string_view> kGeometryKeys = {
-    "a", "b", "center", "radius", "angle_start", "angle_end", "point", "normal",
-    "vertices", "file", "scale", "offset", "axis", "inside", "length"};
+    "a",        "b",    "center", "radius", "angle_start", "angle_end", "point", "normal",
+    "vertices", "file", "scale",  "offset", "axis",        "inside",    "length"};
 
 dem::WallMotionParams read_motion(TomlReader& r, const DemContext& ctx) {
   dem::WallMotionParams m;
@@ -62,9 +62,11 @@ void read_geometry(TomlReader& r, dem::WallParams& w, const DemContext& ctx) {
       w.normal = unit_vector_or(r, "normal", ctx, Vec3::UnitZ());
       break;
     case WallKind::Triangle: {
-      if (!r.has("vertices")) r.missing("vertices", "missing (expected [[x, y, z], [x, y, z], [x, y, z]])");
+      if (!r.has("vertices"))
+        r.missing("vertices", "missing (expected [[x, y, z], [x, y, z], [x, y, z]])");
       w.vertices = r.vec3_list("vertices");
-      r.expect(w.vertices.size() == 3, "vertices", "three points [[x, y, z], [x, y, z], [x, y, z]]");
+      r.expect(w.vertices.size() == 3, "vertices",
+               "three points [[x, y, z], [x, y, z], [x, y, z]]");
       const Vec3 n = (w.vertices[1] - w.vertices[0]).cross(w.vertices[2] - w.vertices[0]);
       r.expect(n.norm() > 0.0, "vertices", "three points that are not on one line");
       break;
@@ -102,9 +104,12 @@ dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ct
   w.material = r.required_string("material");
   check_material(r, "material", w.material, ctx);
   read_geometry(r, w, ctx);
-  r.reject(kGeometryKeys, fmt::format("not used by walls of type \"{}\"", name_of(kWallKinds, w.kind)));
-  if (auto motion = r.optional_table("motion")) w.motion = read_motion(*motion, ctx);
-  else w.motion.direction = up(ctx);
+  r.reject(kGeometryKeys,
+           fmt::format("not used by walls of type \"{}\"", name_of(kWallKinds, w.kind)));
+  if (auto motion = r.optional_table("motion"))
+    w.motion = read_motion(*motion, ctx);
+  else
+    w.motion.direction = up(ctx);
   r.finish();
   return w;
 }

@@ -25,8 +25,10 @@ class Writer {
   }
   // Angular velocities: a number about z in 2D.
   void spin(Json& t, const std::string& key, const Vec3& w) const {
-    if (dim_ == 2) t[key] = w.z();
-    else t[key] = vec(w);
+    if (dim_ == 2)
+      t[key] = w.z();
+    else
+      t[key] = vec(w);
   }
   static void finite(Json& t, const std::string& key, double value) {
     if (std::isfinite(value)) t[key] = value;
@@ -38,11 +40,13 @@ class Writer {
 
   Json run(const dem::RunParams& r) const {
     Json t{{"dimension", r.dimension}, {"duration", r.duration}};
-    if (r.time_step > 0.0) t["time_step"] = r.time_step;
-    else t["time_step"] = "auto";
+    if (r.time_step > 0.0)
+      t["time_step"] = r.time_step;
+    else
+      t["time_step"] = "auto";
     t["safety_factor"] = r.safety_factor;
     t["gravity"] = vec(r.gravity);
-    t["domain"] = box(r.domain_min, r.domain_max);
+    if (r.domain_max != r.domain_min) t["domain"] = box(r.domain_min, r.domain_max);
     t["skin"] = r.skin;
     t["seed"] = static_cast<std::int64_t>(r.seed);
     t["ke_blowup_factor"] = r.ke_blowup_factor;
@@ -51,16 +55,16 @@ class Writer {
 
   static Json contact(const dem::ContactParams& c) {
     Json t{{"model", name_of(detail::kContactModels, c.model)},
-                  {"rolling", name_of(detail::kRollingModels, c.rolling)},
-                  {"friction_rule", name_of(detail::kPairRules, c.friction_rule)},
-                  {"lock_rotation", c.lock_rotation},
-                  {"local_damping", c.local_damping},
-                  {"dashpot_may_pull", c.dashpot_may_pull},
-                  {"tangential_damping", c.tangential_damping},
-                  {"kuen_wall_depth", c.kuen_wall_depth},
-                  {"kuen_particle_factor", c.kuen_particle_factor},
-                  {"epsd_stiffness_factor", c.epsd_stiffness_factor},
-                  {"epsd_damping_ratio", c.epsd_damping_ratio}};
+           {"rolling", name_of(detail::kRollingModels, c.rolling)},
+           {"friction_rule", name_of(detail::kPairRules, c.friction_rule)},
+           {"lock_rotation", c.lock_rotation},
+           {"local_damping", c.local_damping},
+           {"dashpot_may_pull", c.dashpot_may_pull},
+           {"tangential_damping", c.tangential_damping},
+           {"kuen_wall_depth", c.kuen_wall_depth},
+           {"kuen_particle_factor", c.kuen_particle_factor},
+           {"epsd_stiffness_factor", c.epsd_stiffness_factor},
+           {"epsd_damping_ratio", c.epsd_damping_ratio}};
     Json pairs = Json::array();
     for (const auto& p : c.pairs) {
       Json pt{{"materials", Json::array({p.material_a, p.material_b})}};
@@ -89,6 +93,17 @@ class Writer {
     return t;
   }
 
+  // False for a wall that never moves: all of [walls.motion] at its defaults.
+  bool moves(const dem::WallMotionParams& m) const {
+    const Vec3 up = dim_ == 2 ? Vec3::UnitY() : Vec3::UnitZ();
+    return !(m.velocity.isZero(0.0) && m.angular_velocity.isZero(0.0) && m.pivot.isZero(0.0) &&
+             m.move_start == 0.0 && m.move_stop == dem::kNever && m.amplitude == 0.0 &&
+             m.frequency == 0.0 && m.phase == 0.0 && m.direction == up &&
+             m.remove_at == dem::kNever);
+  }
+  // Degrees rounded to 1e-9 so that 241 is not written as 241.00000000000003.
+  static double degrees(double radians) { return std::round(rad2deg(radians) * 1e9) / 1e9; }
+
   Json motion(const dem::WallMotionParams& m) const {
     Json t{{"velocity", vec(m.velocity)}, {"start", m.move_start}};
     finite(t, "stop", m.move_stop);
@@ -96,15 +111,15 @@ class Writer {
     t["pivot"] = vec(m.pivot);
     t["amplitude"] = m.amplitude;
     t["frequency"] = m.frequency;
-    t["phase"] = rad2deg(m.phase);
+    t["phase"] = degrees(m.phase);
     t["direction"] = vec(m.direction);
     finite(t, "remove_at", m.remove_at);
     return t;
   }
 
   Json wall(const dem::WallParams& w) const {
-    Json t{{"name", w.name}, {"type", name_of(detail::kWallKinds, w.kind)},
-                  {"material", w.material}};
+    Json t{
+        {"name", w.name}, {"type", name_of(detail::kWallKinds, w.kind)}, {"material", w.material}};
     using dem::WallKind;
     switch (w.kind) {
       case WallKind::Segment:
@@ -114,8 +129,8 @@ class Writer {
       case WallKind::Arc:
         t["center"] = vec(w.center);
         t["radius"] = w.radius;
-        t["angle_start"] = rad2deg(w.angle_start);
-        t["angle_end"] = rad2deg(w.angle_end);
+        t["angle_start"] = degrees(w.angle_start);
+        t["angle_end"] = degrees(w.angle_end);
         break;
       case WallKind::Plane:
         t["point"] = vec(w.point);
@@ -140,7 +155,7 @@ class Writer {
         finite(t, "length", w.length);
         break;
     }
-    t["motion"] = motion(w.motion);
+    if (moves(w.motion)) t["motion"] = motion(w.motion);
     return t;
   }
 
@@ -176,7 +191,7 @@ class Writer {
     if (fill) {
       t["radius_min"] = s.radius_min;
       t["radius_max"] = s.radius_max;
-      if (s.kind == SourceKind::RandomFill && !s.count) t["porosity"] = s.porosity;
+      if (s.kind == SourceKind::RandomFill) t["porosity"] = s.porosity;
       if (s.kind == SourceKind::Grow) t["packing_fraction"] = s.packing_fraction;
       if (s.count) t["count"] = *s.count;
       t["shrink"] = s.shrink;
@@ -191,9 +206,9 @@ class Writer {
 
   static Json output(const dem::OutputParams& o) {
     return Json{{"snapshot_interval", o.snapshot_interval},
-                       {"series_interval", o.series_interval},
-                       {"checkpoint_interval", o.checkpoint_interval},
-                       {"snapshots", o.write_snapshots}};
+                {"series_interval", o.series_interval},
+                {"checkpoint_interval", o.checkpoint_interval},
+                {"snapshots", o.write_snapshots}};
   }
 
  private:

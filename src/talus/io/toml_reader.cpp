@@ -72,7 +72,8 @@ std::string closest_name(std::string_view word, const std::vector<std::string>& 
   for (const std::string& candidate : candidates) {
     std::size_t distance = edit_distance(word, candidate);
     // "poisson" for "poisson_ratio": a prefix of a long name counts as close.
-    const bool prefix = word.size() >= 4 && (candidate.starts_with(word) || word.starts_with(candidate));
+    const bool prefix =
+        word.size() >= 4 && (candidate.starts_with(word) || word.starts_with(candidate));
     if (prefix) distance = std::min<std::size_t>(distance, 1);
     if (distance < best_distance) {
       best = candidate;
@@ -170,9 +171,11 @@ const toml::node* TomlReader::get(std::string_view key) {
 
 double TomlReader::to_number(std::string_view key, const toml::node& node) const {
   if (node.is_integer()) return static_cast<double>(*node.value<std::int64_t>());
-  if (!node.is_floating_point()) fail(key, fmt::format("expected a number, got {}", node_text(node)));
+  if (!node.is_floating_point())
+    fail(key, fmt::format("expected a number, got {}", node_text(node)));
   const double value = *node.value<double>();
-  if (!std::isfinite(value)) fail(key, fmt::format("expected a finite number, got {}", node_text(node)));
+  if (!std::isfinite(value))
+    fail(key, fmt::format("expected a finite number, got {}", node_text(node)));
   return value;
 }
 
@@ -230,7 +233,9 @@ bool TomlReader::boolean(std::string_view key, bool fallback) {
 Vec3 TomlReader::to_vec3(std::string_view key, const toml::node& node,
                          std::string_view what) const {
   const toml::array* array = node.as_array();
-  const auto is_number = [](const toml::node& n) { return n.is_integer() || n.is_floating_point(); };
+  const auto is_number = [](const toml::node& n) {
+    return n.is_integer() || n.is_floating_point();
+  };
   if (!array || array->size() < 2 || array->size() > 3 ||
       !std::all_of(array->begin(), array->end(), is_number)) {
     fail(key, fmt::format("expected {}, got {}", what, node_text(node)));
@@ -298,7 +303,8 @@ std::optional<std::size_t> TomlReader::choose(std::string_view key,
       if (names[i] == *value) return i;
     }
   }
-  std::string message = fmt::format("expected one of {}, got {}", join_quoted(names), node_text(*node));
+  std::string message =
+      fmt::format("expected one of {}, got {}", join_quoted(names), node_text(*node));
   if (node->is_string()) {
     const std::string guess =
         closest_name(*value, std::vector<std::string>(names.begin(), names.end()));
@@ -317,8 +323,8 @@ std::optional<TomlReader> TomlReader::optional_table(std::string_view key) {
   const toml::node* node = get(key);
   if (!node) return std::nullopt;
   expect(node->is_table(), key, "a table");
-  return child(*node->as_table(), key, path_.empty() ? std::string(key) : path_ + "." + std::string(key),
-               false);
+  return child(*node->as_table(), key,
+               path_.empty() ? std::string(key) : path_ + "." + std::string(key), false);
 }
 
 TomlReader TomlReader::required_table(std::string_view key) {
@@ -329,7 +335,8 @@ TomlReader TomlReader::required_table(std::string_view key) {
 std::vector<TomlReader> TomlReader::tables(std::string_view key) {
   const toml::node* node = get(key);
   if (!node) return {};
-  const std::string section = section_.empty() ? std::string(key) : section_ + "." + std::string(key);
+  const std::string section =
+      section_.empty() ? std::string(key) : section_ + "." + std::string(key);
   const toml::array* array = node->as_array();
   expect(array && std::all_of(array->begin(), array->end(), [](auto& n) { return n.is_table(); }),
          key, fmt::format("an array of tables ([[{}]])", section));
@@ -371,7 +378,8 @@ void TomlReader::finish() const {
 void apply_overrides(toml::table& table, const std::vector<std::string>& sets) {
   for (const std::string& set : sets) {
     const auto equals = set.find('=');
-    const std::string_view key = trim(std::string_view(set).substr(0, std::min(equals, set.size())));
+    const std::string_view key =
+        trim(std::string_view(set).substr(0, std::min(equals, set.size())));
     if (equals == std::string::npos || key.empty()) {
       throw InputError(fmt::format("--set {}: expected key=value (e.g. run.duration=0.5)", set));
     }

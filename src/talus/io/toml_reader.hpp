@@ -110,8 +110,8 @@ class TomlReader {
   const toml::node* get(std::string_view key);  // marks the key as read
   double to_number(std::string_view key, const toml::node& node) const;
   Vec3 to_vec3(std::string_view key, const toml::node& node, std::string_view what) const;
-  std::optional<std::size_t> choose(std::string_view key, const std::vector<std::string_view>& names,
-                                    bool required);
+  std::optional<std::size_t> choose(std::string_view key,
+                                    const std::vector<std::string_view>& names, bool required);
   template <typename E>
   static std::vector<std::string_view> names_of(const EnumNames<E>& names) {
     std::vector<std::string_view> out;
