@@ -35,7 +35,7 @@ Region box_3d(double side) {
   return r;
 }
 
-// The flume fill is the expensive one (about 1 s): made once, checked by several tests.
+// The flume fill is the expensive one (about 1 s): made once per process, checked by two tests.
 const std::vector<PackedParticle>& flume_fill() {
   static const std::vector<PackedParticle> particles =
       random_fill(flume_triangle(), kRmin, kRmax, porosity_2d_from_3d(0.39), std::nullopt, 1);
@@ -81,7 +81,7 @@ TEST(Packing, ParticleCountFromPorosity) {
   // 9099 disks (9098.7 with the exact area, rounded). With n rounded to 0.166 it would be 9101.
   EXPECT_EQ(particle_count_for_porosity(flume_triangle(), kRmin, kRmax, porosity_2d_from_3d(0.39)),
             9099);
-  EXPECT_EQ(flume_fill().size(), 9099u);
+  EXPECT_EQ(particle_count_for_porosity(flume_triangle(), kRmin, kRmax, 0.166), 9101);
   // 3D: N = V(1 - n)/((4/3) pi <r^3>), <r^3> = (1 + 2)(1 + 4)/4 = 3.75 mm^3 for r in 1..2 mm:
   // 8e-6 * 0.5 / (4.18879 * 3.75e-9) = 254.6 -> 255.
   EXPECT_EQ(particle_count_for_porosity(box_3d(0.02), kRmin, kRmax, 0.5), 255);
@@ -90,6 +90,7 @@ TEST(Packing, ParticleCountFromPorosity) {
 TEST(Packing, FlumeFillReachesPorosityWithNegligibleOverlap) {
   const Region tri = flume_triangle();
   const std::vector<PackedParticle>& particles = flume_fill();
+  EXPECT_EQ(particles.size(), 9099u);
   // The radii are scaled to the target porosity exactly (PFC radius expansion).
   EXPECT_NEAR(porosity(tri, particles), porosity_2d_from_3d(0.39), 1e-9);
   EXPECT_EQ(count_outside(tri, particles), 0);
@@ -100,6 +101,11 @@ TEST(Packing, FlumeFillReachesPorosityWithNegligibleOverlap) {
   EXPECT_LT(stats.max_overlap, 1e-3 * kRmin);
   EXPECT_LT(stats.mean_overlap, 1e-4 * kRmin);
   EXPECT_LE(stats.max_wall_penetration, 0.0);
+  // Kuen's 3 % shrink: porosity 1 - 0.8338 * 0.97^2 = 0.2155 and no overlap left.
+  std::vector<PackedParticle> shrunk = particles;
+  shrink_radii(shrunk, 0.03);
+  EXPECT_NEAR(porosity(tri, shrunk), 1 - (1 - porosity_2d_from_3d(0.39)) * 0.9409, 1e-9);
+  EXPECT_EQ(overlap_stats(tri, shrunk).overlapping_pairs, 0);
 }
 
 TEST(Packing, RadiiAreUniformAndScaledTogether) {
@@ -210,12 +216,6 @@ TEST(Packing, ShrinkRadiiIsExact) {
   EXPECT_EQ(particles[1].position, Vec3(3, 1, 0));
   // Porosity by hand: 1 - pi (0.97^2 + 0.485^2) / (4 * 2).
   EXPECT_NEAR(porosity(box_2d(4, 2), particles), 1 - M_PI * (0.9409 + 0.235225) / 8, 1e-15);
-  // Kuen: 3 % shrink of the flume fill: 1 - 0.8338 * 0.97^2 = 0.2155.
-  std::vector<PackedParticle> shrunk = flume_fill();
-  shrink_radii(shrunk, 0.03);
-  EXPECT_NEAR(porosity(flume_triangle(), shrunk), 1 - (1 - porosity_2d_from_3d(0.39)) * 0.9409,
-              1e-9);
-  EXPECT_EQ(overlap_stats(flume_triangle(), shrunk).overlapping_pairs, 0);
 }
 
 TEST(Packing, SameSeedSameResult) {

@@ -65,9 +65,10 @@ TYPED_TEST(HertzImpact, ChungOoiCase1TwoEqualSpheres) {
   auto run = build_dem<D>(sc, {});
   const Impact<D> imp = measure_impact(*run, 0, pair_overlap<D>(0, 1), 20 * kSteps);
   ASSERT_TRUE(imp.finished);
-  std::printf("[verif] case1 D=%d overlap %.6e (%.6e) force %.6e (%.6e) t_c %.6e (%.6e) v_out %.9f\n",
-              D, imp.max_overlap, h.overlap, imp.max_force, h.force, imp.duration(), h.duration,
-              imp.v_out.x());
+  std::printf(
+      "[verif] case1 D=%d overlap %.6e (%.6e) force %.6e (%.6e) t_c %.6e (%.6e) v_out %.9f\n", D,
+      imp.max_overlap, h.overlap, imp.max_force, h.force, imp.duration(), h.duration,
+      imp.v_out.x());
   EXPECT_NEAR(imp.max_overlap, h.overlap, kPeakTol * h.overlap);
   EXPECT_NEAR(imp.max_force, h.force, kPeakTol * h.force);
   EXPECT_NEAR(imp.duration(), h.duration, 1e-3 * h.duration);
@@ -98,9 +99,10 @@ TYPED_TEST(HertzImpact, ChungOoiCase2SphereOnRigidPlane) {
   auto run = build_dem<D>(sc, {});
   const Impact<D> imp = measure_impact(*run, 0, floor_overlap<D>(0), 20 * kSteps);
   ASSERT_TRUE(imp.finished);
-  std::printf("[verif] case2 D=%d overlap %.6e (%.6e) force %.6e (%.6e) t_c %.6e (%.6e) v_out %.9f\n",
-              D, imp.max_overlap, h.overlap, imp.max_force, h.force, imp.duration(), h.duration,
-              imp.v_out[kUp<D>]);
+  std::printf(
+      "[verif] case2 D=%d overlap %.6e (%.6e) force %.6e (%.6e) t_c %.6e (%.6e) v_out %.9f\n", D,
+      imp.max_overlap, h.overlap, imp.max_force, h.force, imp.duration(), h.duration,
+      imp.v_out[kUp<D>]);
   EXPECT_NEAR(imp.max_overlap, h.overlap, kPeakTol * h.overlap);
   EXPECT_NEAR(imp.max_force, h.force, kPeakTol * h.force);
   EXPECT_NEAR(imp.duration(), h.duration, 1e-3 * h.duration);
@@ -147,8 +149,8 @@ TYPED_TEST(HertzImpact, ChungOoiCase3RestitutionEqualsInput) {
       }
       ASSERT_TRUE(imp.finished);
       const double measured = -imp.v_out[kUp<D>] / v_in;
-      std::printf("[verif] case3 D=%d %s e_in %.3f e_measured %.6f\n", D, wall ? "wall" : "pair",
-                  e, measured);
+      std::printf("[verif] case3 D=%d %s e_in %.3f e_measured %.6f\n", D, wall ? "wall" : "pair", e,
+                  measured);
       EXPECT_NEAR(measured, e, 1e-3) << (wall ? "wall" : "pair") << " e = " << e;
     }
   }

@@ -35,6 +35,7 @@ struct Rebound {
   double tangential_ratio;    // v_t' / v_t of the centre
   double spin;                // |omega'| R / v_n, dimensionless
   double energy_ratio;        // (translational + rotational) kinetic energy after / before
+  double overlap_ratio;       // peak overlap / R
 };
 
 template <int D>
@@ -55,7 +56,8 @@ Rebound oblique_impact(double theta_deg) {
   const double inertia = Space<D>::inertia_factor() * m * kR * kR;
   const double w2 = Space<D>::rot_dot(imp.w_out, imp.w_out);
   return {imp.v_out[kUp<D>] / vn, imp.v_out.x() / vt, std::sqrt(w2) * kR / vn,
-          (0.5 * m * imp.v_out.squaredNorm() + 0.5 * inertia * w2) / (0.5 * m * kSpeed * kSpeed)};
+          (0.5 * m * imp.v_out.squaredNorm() + 0.5 * inertia * w2) / (0.5 * m * kSpeed * kSpeed),
+          imp.max_overlap / kR};
 }
 
 template <class Dim>
@@ -66,23 +68,45 @@ TYPED_TEST_SUITE(ObliqueImpact, Dims);
 TYPED_TEST(ObliqueImpact, ChungOoiCase4AluminaOnPlane) {
   constexpr int D = TypeParam::value;
   const double k = Space<D>::inertia_factor();
+  const double rolling_ratio = 1 / (1 + k);
   const double theta_c = rad2deg(std::atan(kMu * (1 + kE_n) * (1 + 1 / k)));
-  if (D == 3) EXPECT_NEAR(theta_c, 32.5, 0.05);  // the spec's value
+  if (D == 3) {
+    EXPECT_NEAR(theta_c, 32.5, 0.05);  // the spec's value
+  }
   for (int deg = 5; deg <= 85; deg += 5) {
     const Rebound r = oblique_impact<D>(deg);
     const double sliding_ratio = 1 - kMu * (1 + kE_n) / std::tan(deg2rad(deg));
     const double sliding_spin = kMu * (1 + kE_n) / k;
     std::printf(
         "[verif] case4 D=%d theta %2d e_n %.5f v_t'/v_t %.5f (sliding %.5f, rolling %.5f) "
-        "omega R/v_n %.5f (sliding %.5f) energy %.5f\n",
-        D, deg, r.normal_restitution, r.tangential_ratio, sliding_ratio, 1 / (1 + k), r.spin,
-        sliding_spin, r.energy_ratio);
-    // Friction changes neither the normal restitution nor creates energy.
+        "omega R/v_n %.5f (sliding %.5f) energy %.5f overlap/R %.2e\n",
+        D, deg, r.normal_restitution, r.tangential_ratio, sliding_ratio, rolling_ratio, r.spin,
+        sliding_spin, r.energy_ratio, r.overlap_ratio);
+    // Any angle: friction changes neither the normal restitution (1e-3: the
+    // Hertz restitution test's time-step bound) nor creates energy, and the
+    // friction impulse is at most mu times the normal one (Coulomb).
     EXPECT_NEAR(r.normal_restitution, kE_n, 1e-3) << deg;
     EXPECT_LE(r.energy_ratio, 1.0) << deg;
-    // Coulomb bound, any angle: the friction impulse is at most mu times the normal one.
-    EXPECT_GE(r.tangential_ratio, sliding_ratio - 1e-3) << deg;
-    EXPECT_LE(r.spin, sliding_spin * (1 + 1e-3)) << deg;
+    EXPECT_GE(r.tangential_ratio, sliding_ratio - 2e-4) << deg;
+    EXPECT_LE(r.spin, sliding_spin * (1 + 1e-4)) << deg;
+    if (deg > theta_c) {
+      // Gross sliding: the impulse relations above. The measured ratio agrees to
+      // ~4e-5; 2e-4 leaves room for the time step (t_c / 1500). The spin is
+      // smaller by the lever arm R - xi/2 of the contact point (stepper.cpp)
+      // instead of R: at most xi_max / (2R) relative (0.2 % for spheres; 2 % for
+      // disks, which weigh rho pi R^2 per metre of depth and overlap ten times more).
+      EXPECT_NEAR(r.tangential_ratio, sliding_ratio, 2e-4) << deg;
+      EXPECT_GE(r.spin, sliding_spin * (1 - 0.5 * r.overlap_ratio) - 1e-4) << deg;
+    } else {
+      // Below theta_c rigid bodies would leave rolling at 1/(1+k). Mindlin's
+      // tangential spring (stiffness ratio k_t/k_n = 2(1-nu)/(2-nu), tangential
+      // frequency sqrt(k_t/k_n (1 + 1/k)) ~ 1.7 times the normal one) stores
+      // tangential energy and returns part of it before separation, so the
+      // ratio deviates from 1/(1+k) by up to ~0.24 here (most at 5 degrees,
+      // where the contact point leaves still slipping forward). Loose band:
+      EXPECT_LE(r.tangential_ratio, 1.0) << deg;
+      EXPECT_NEAR(r.tangential_ratio, rolling_ratio, 0.25) << deg;
+    }
   }
 }
 

@@ -41,8 +41,8 @@ inline MaterialParams hertz_material(const std::string& name, double density, do
   return m;
 }
 
-inline MaterialParams linear_material(const std::string& name, double density, double kn,
-                                      double ks, double beta, double friction) {
+inline MaterialParams linear_material(const std::string& name, double density, double kn, double ks,
+                                      double beta, double friction) {
   MaterialParams m;
   m.name = name;
   m.density = density;
