@@ -45,21 +45,29 @@ TEST(PeerColumn, EarlyKineticEnergyMatchesLiggghts) {
   EXPECT_NEAR(kinetic_energy(run->system.particles), 8.05036e-5, 8.05036e-5 * 1e-4);
 }
 
-// Two threads give the same state as one, bit for bit: the forces are gathered
-// per particle in pair order (stepper.cpp).
-TEST(PeerColumn, TwoThreadsGiveIdenticalState) {
+// With two threads each thread scatters into its own force buffer and the
+// buffers are summed in thread order: repeated runs are bit-identical, and the
+// result differs from one thread only by round-off in the few particles shared
+// by both threads' pair chunks.
+TEST(PeerColumn, TwoThreadsAreDeterministicAndAgreeWithOne) {
   auto one = build_dem<3>(cases::peer_column(10, 10, 20), {1, true});
   auto two = build_dem<3>(cases::peer_column(10, 10, 20), {2, true});
+  auto again = build_dem<3>(cases::peer_column(10, 10, 20), {2, true});
   RunControl c;
   c.duration = 600 * 5e-6;
   run_dem<3>(*one, c, {}, true);
   run_dem<3>(*two, c, {}, true);
-  const auto& a = one->system.particles;
-  const auto& b = two->system.particles;
+  run_dem<3>(*again, c, {}, true);
+  const auto& a = two->system.particles;
+  const auto& b = again->system.particles;
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     ASSERT_EQ(a.id[i], b.id[i]);
     ASSERT_EQ(a.x[i], b.x[i]);
     ASSERT_EQ(a.w[i], b.w[i]);
   }
+  // Round-off differences grow slowly over 600 steps of a dense column; 1e-9
+  // relative is far below the 1e-4 at which the peers themselves agree.
+  const double ke1 = kinetic_energy(one->system.particles), ke2 = kinetic_energy(a);
+  EXPECT_NEAR(ke2, ke1, 1e-9 * ke1);
 }

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <type_traits>
 
 // Hot per-contact functions are forced inline: the stepper instantiates many
 // contact models in one translation unit, where GCC's inliner gives up early.
@@ -12,6 +13,19 @@
 namespace talus {
 
 using Vec3 = Eigen::Vector3d;
+
+// Zero for small fixed vectors and scalars, written out so that it inlines
+// (Eigen's setZero goes through an out-of-line std::fill_n here).
+template <class T>
+TALUS_HOT T zero_of() {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return T(0);
+  } else {
+    T v;
+    for (int d = 0; d < T::RowsAtCompileTime; ++d) v[d] = 0.0;
+    return v;
+  }
+}
 
 template <int D>
 struct Space;
@@ -43,7 +57,7 @@ struct Space<3> {
   using Rot = Eigen::Vector3d;
 
   TALUS_HOT static Vec cross(const Vec& a, const Vec& b) { return a.cross(b); }
-  TALUS_HOT static Rot rot_zero() { return Rot::Zero(); }
+  TALUS_HOT static Rot rot_zero() { return zero_of<Rot>(); }
   TALUS_HOT static double rot_norm(const Rot& w) { return w.norm(); }
   TALUS_HOT static double rot_dot(const Rot& a, const Rot& b) { return a.dot(b); }
   TALUS_HOT static Vec from3(const Vec3& v) { return v; }

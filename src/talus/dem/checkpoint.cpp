@@ -88,7 +88,7 @@ void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
   nl.pairs.clear();
   nl.pair_history.resize(pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    nl.pairs.push_back({pairs[k].i, pairs[k].j});
+    nl.pairs.push_back(NeighbourList<D>::make_pair(s.particles, pairs[k].i, pairs[k].j));
     nl.pair_history[k].shear = shear[k];
     nl.pair_history[k].roll = roll[k];
   }

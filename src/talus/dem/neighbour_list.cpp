@@ -121,7 +121,7 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
             const int j0 = nc == c ? i + 1 : cell_start_[nc];
             for (int j = j0; j < cell_start_[nc + 1]; ++j) {
               const double cut = p.r[i] + p.r[j] + skin_;
-              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) pairs.push_back({i, j});
+              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) pairs.push_back(make_pair(p, i, j));
             }
           }
         }

@@ -15,9 +15,14 @@ template <int D>
 class NeighbourList {
  public:
   using Vec = typename Space<D>::Vec;
+  // r_eff and m_eff are constant for a pair: computed once per build.
   struct Pair {
     int i, j;
+    double r_eff, m_eff;
   };
+  static Pair make_pair(const Particles<D>& p, int i, int j) {
+    return {i, j, p.r[i] * p.r[j] / (p.r[i] + p.r[j]), p.m[i] * p.m[j] / (p.m[i] + p.m[j])};
+  }
 
   // Particle pairs closer than r_i + r_j + skin; pair_history is parallel to pairs.
   std::vector<Pair> pairs;

@@ -447,7 +447,7 @@ struct Problem {
   }
 };
 
-// Fraction of the target solid fraction at which the random placement starts.
+// Solid fraction at which the random placement starts (well below random sequential jamming).
 template <int D>
 double placement_fraction() {
   return D == 2 ? 0.35 : 0.2;

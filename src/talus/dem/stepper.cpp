@@ -129,9 +129,11 @@ class Stepper final : public StepperBase<D> {
         error_ = std::current_exception();
       }
       prepare_wall_accumulators();
+      prepare_step_counters();
+      prepare_thread_buffers(omp_get_num_threads(), static_cast<int>(p.size()));
     }
     if (error_) return;
-    compute_forces();
+    compute_forces(true);
     kick(0.5 * dt);
 #pragma omp single
     {
@@ -247,7 +249,7 @@ class Stepper final : public StepperBase<D> {
     for (std::size_t k = 0; k < nl.pairs.size(); ++k) {
       const int a = new_index[nl.pairs[k].i], b = new_index[nl.pairs[k].j];
       if (a < 0 || b < 0) continue;
-      pairs.push_back({a, b});
+      pairs.push_back({a, b, nl.pairs[k].r_eff, nl.pairs[k].m_eff});
       hist.push_back(nl.pair_history[k]);
     }
     nl.pairs.swap(pairs);
@@ -271,7 +273,8 @@ class Stepper final : public StepperBase<D> {
   TALUS_HOT bool pair_force(std::size_t k, PairResult<D>& out) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
-    const int i = nl.pairs[k].i, j = nl.pairs[k].j;
+    const auto& pair = nl.pairs[k];
+    const int i = pair.i, j = pair.j;
     const Vec d = p.x[i] - p.x[j];
     const double d2 = d.squaredNorm();
     const double rs = p.r[i] + p.r[j];
@@ -281,11 +284,11 @@ class Stepper final : public StepperBase<D> {
     }
     const double dist = std::sqrt(d2);
     ContactKinematics<D> kin;
-    kin.n = d / dist;
+    kin.n = d * (1.0 / dist);
     kin.overlap = rs - dist;
     const double ci = p.r[i] - 0.5 * kin.overlap, cj = p.r[j] - 0.5 * kin.overlap;
-    kin.r_eff = p.r[i] * p.r[j] / rs;
-    kin.m_eff = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
+    kin.r_eff = pair.r_eff;
+    kin.m_eff = pair.m_eff;
     if constexpr (Model::needs_inertia) {
       const double ia = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
       const double ib = 1.0 / p.inv_I[j] + p.m[j] * p.r[j] * p.r[j];
@@ -309,21 +312,29 @@ class Stepper final : public StepperBase<D> {
   }
 
   // Called by every thread of the team (or by one thread outside a region).
-  void compute_forces() {
+  void prepare_step_counters() {
+    pair_touching_ = 0;
+    wall_touching_ = 0;
+  }
+
+  // `prepared`: counters, accumulators and buffers were set up by the caller.
+  void compute_forces(bool prepared = false) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int n = static_cast<int>(p.size());
     const std::size_t np = nl.pairs.size();
+    if (!prepared) {
 #pragma omp single
-    {
-      pair_touching_ = 0;
-      wall_touching_ = 0;
-      if (wall_acc_.empty()) prepare_wall_accumulators();
+      {
+        prepare_step_counters();
+        prepare_wall_accumulators();
+        prepare_thread_buffers(omp_get_num_threads(), n);
+      }
     }
     int64_t touching = 0;
     if (omp_get_num_threads() <= 1) {
       for (int i = 0; i < n; ++i) {
-        p.f[i].setZero();
+        p.f[i] = zero_of<Vec>();
         p.t[i] = Space<D>::rot_zero();
         p.contacts[i] = 0;
       }
@@ -340,32 +351,42 @@ class Stepper final : public StepperBase<D> {
         ++touching;
       }
     } else {
-      // Race-free: forces per pair first, then each particle gathers its pairs
-      // in pair order, so the sums are the same as with one thread.
-#pragma omp single
-      results_.resize(np);
-#pragma omp for schedule(static)
-      for (std::size_t k = 0; k < np; ++k) {
-        results_[k].touching = pair_force(k, results_[k]);
-        touching += results_[k].touching;
+      // Race-free: each thread scatters its contiguous chunk of pairs into its
+      // own buffer, over the particle range that chunk touches (particles are
+      // sorted by cell, so the ranges are short and barely overlap); then each
+      // particle sums the buffers in thread order. Deterministic for a given
+      // thread count.
+      const int me = omp_get_thread_num();
+      auto& buf = buffers_[me];
+      const std::size_t k0 = buf.k0, k1 = buf.k1;
+      for (int i = buf.lo; i <= buf.hi; ++i) {
+        buf.f[i] = zero_of<Vec>();
+        buf.t[i] = Space<D>::rot_zero();
+        buf.contacts[i] = 0;
       }
+      PairResult<D> r;
+      for (std::size_t k = k0; k < k1; ++k) {
+        if (!pair_force(k, r)) continue;
+        const int i = nl.pairs[k].i, j = nl.pairs[k].j;
+        buf.f[i] += r.f;
+        buf.f[j] -= r.f;
+        buf.t[i] += r.ti;
+        buf.t[j] += r.tj;
+        ++buf.contacts[i];
+        ++buf.contacts[j];
+        ++touching;
+      }
+#pragma omp barrier
 #pragma omp for schedule(static)
       for (int i = 0; i < n; ++i) {
-        Vec f = Vec::Zero();
+        Vec f = zero_of<Vec>();
         Rot t = Space<D>::rot_zero();
         int c = 0;
-        for (int q = nl.incidence_start[i]; q < nl.incidence_start[i + 1]; ++q) {
-          const int e = nl.incidence[q];
-          const auto& r = results_[e >> 1];
-          if (!r.touching) continue;
-          if (e & 1) {
-            f -= r.f;
-            t += r.tj;
-          } else {
-            f += r.f;
-            t += r.ti;
-          }
-          ++c;
+        for (const auto& b : buffers_) {
+          if (i < b.lo || i > b.hi) continue;
+          f += b.f[i];
+          t += b.t[i];
+          c += b.contacts[i];
         }
         p.f[i] = f;
         p.t[i] = t;
@@ -384,7 +405,46 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
+  // Per-thread force buffers and the particle range each thread's pair chunk
+  // touches; the ranges change only when the neighbour list is rebuilt.
+  struct ThreadBuffer {
+    std::vector<Vec> f;
+    std::vector<Rot> t;
+    std::vector<int> contacts;
+    int lo = 0, hi = -1;
+    std::size_t k0 = 0, k1 = 0;  // the thread's chunk of pairs
+  };
+  void prepare_thread_buffers(int nt, int n) {
+    if (nt <= 1) return;
+    const auto& pairs = s_.neighbours.pairs;
+    if (static_cast<int>(buffers_.size()) == nt && buffers_built_ == s_.neighbours.builds &&
+        static_cast<int>(buffers_[0].f.size()) == n)
+      return;
+    buffers_.resize(nt);
+    const std::size_t np = pairs.size();
+    // Equal numbers of pairs per thread (weighting touching pairs more was
+    // measured and did not help: the wall loop's imbalance goes the other way).
+    for (int t = 0; t < nt; ++t) {
+      buffers_[t].k0 = np * t / nt;
+      buffers_[t].k1 = np * (t + 1) / nt;
+    }
+    for (int t = 0; t < nt; ++t) {
+      auto& b = buffers_[t];
+      b.f.resize(n);
+      b.t.resize(n);
+      b.contacts.resize(n);
+      b.lo = n;
+      b.hi = -1;
+      for (std::size_t k = b.k0; k < b.k1; ++k) {
+        b.lo = std::min({b.lo, pairs[k].i, pairs[k].j});
+        b.hi = std::max({b.hi, pairs[k].i, pairs[k].j});
+      }
+    }
+    buffers_built_ = s_.neighbours.builds;
+  }
+
   // Per-thread sums of wall force and torque, reduced in thread order.
+
   void prepare_wall_accumulators() {
     const int nw = static_cast<int>(s_.walls.size());
     const int nt = std::max(1, s_.threads);
@@ -418,7 +478,7 @@ class Stepper final : public StepperBase<D> {
     const int nw = static_cast<int>(s_.walls.size());
     Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * nw * 2;
     int64_t touching = 0;
-#pragma omp for schedule(static)
+#pragma omp for schedule(dynamic, 256)
     for (int i = 0; i < n; ++i) {
       p.wall_contacts[i] = 0;
       for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
@@ -463,7 +523,8 @@ class Stepper final : public StepperBase<D> {
   DemSystem<D>& s_;
   int n_materials_ = 0;
   std::vector<typename Model::Coeffs> coeffs_;
-  std::vector<PairResult<D>> results_;
+  std::vector<ThreadBuffer> buffers_;
+  int buffers_built_ = -1;
   std::vector<Vec3> wall_acc_, pivots_;
   std::vector<char> moving_, active_;
   int64_t pair_touching_ = 0, wall_touching_ = 0;

@@ -34,35 +34,42 @@ struct HertzMindlin {
   struct Coeffs {
     HertzConstants h;
     double beta = 0;  // ln e / sqrt(ln^2 e + pi^2), negative
+    // Precomputed so a contact needs one square root for both dampers:
+    // gamma_n = damp_n sqrt(m* sqrt(R* d)), gamma_t = gamma_n sqrt(S_t / S_n).
+    double damp_n = 0, tangential_ratio = 0;
   };
 
   static Coeffs make(const ContactParams&, const MaterialParams& a, const MaterialParams& b,
                      const PairCoefficients& pc) {
     const double ln_e = std::log(pc.restitution);
-    return {{effective_youngs(a, b), effective_shear(a, b), pc.friction},
-            ln_e / std::sqrt(ln_e * ln_e + M_PI * M_PI)};
+    Coeffs c;
+    c.h = {effective_youngs(a, b), effective_shear(a, b), pc.friction};
+    c.beta = ln_e / std::sqrt(ln_e * ln_e + M_PI * M_PI);
+    constexpr double two_sqrt_5_6 = 1.8257418583505538;  // 2 sqrt(5/6)
+    c.damp_n = -two_sqrt_5_6 * c.beta * std::sqrt(2.0 * c.h.e_star);
+    c.tangential_ratio = std::sqrt(8.0 * c.h.g_star / (2.0 * c.h.e_star));
+    return c;
   }
 
   // The history holds the shear displacement xi.
   template <int D>
   TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
                       double dt, ContactForce<D>& out) {
-    constexpr double two_sqrt_5_6 = 1.8257418583505538;  // 2 sqrt(5/6)
     const double sqrt_rd = std::sqrt(k.r_eff * k.overlap);
     const double sn = 2.0 * c.h.e_star * sqrt_rd;
     const double st = 8.0 * c.h.g_star * sqrt_rd;
     const double kn = (4.0 / 3.0) * c.h.e_star * sqrt_rd;
-    const double gn = -two_sqrt_5_6 * c.beta * std::sqrt(sn * k.m_eff);
-    const double gt = -two_sqrt_5_6 * c.beta * std::sqrt(st * k.m_eff);
+    const double gn = c.damp_n * std::sqrt(k.m_eff * sqrt_rd);
+    const double gt = gn * c.tangential_ratio;
     const double fn = kn * k.overlap - gn * k.vn;  // may turn slightly negative (as LIGGGHTS)
     out.fn = fn;
     out.kn = sn;
     h.shear += k.vt * dt;
     h.shear -= h.shear.dot(k.n) * k.n;
     const double cap = c.h.mu * std::abs(fn);
-    const double spring = st * h.shear.norm();
-    if (spring > cap) {
-      h.shear *= cap / spring;
+    const double spring2 = st * st * h.shear.squaredNorm();
+    if (spring2 > cap * cap) {
+      h.shear *= cap / std::sqrt(spring2);
       out.ft = -st * h.shear;  // sliding: no tangential damping
     } else {
       out.ft = -st * h.shear - gt * k.vt;

@@ -22,7 +22,7 @@ struct ContactKinematics {
 // displacement or a force, as the law defines it) and the rolling spring torque.
 template <int D>
 struct ContactHistory {
-  typename Space<D>::Vec shear = Space<D>::Vec::Zero();
+  typename Space<D>::Vec shear = zero_of<typename Space<D>::Vec>();
   typename Space<D>::Rot roll = Space<D>::rot_zero();
 };
 
@@ -32,7 +32,7 @@ template <int D>
 struct ContactForce {
   double fn = 0.0;                                        // along n
   double kn = 0.0;  // current normal stiffness (scales the rolling spring)
-  typename Space<D>::Vec ft = Space<D>::Vec::Zero();      // tangential force
+  typename Space<D>::Vec ft = zero_of<typename Space<D>::Vec>();  // tangential force
   typename Space<D>::Rot roll_torque = Space<D>::rot_zero();
 };
 
