@@ -21,7 +21,8 @@ class StepperBase {
   // Rebuilds the neighbour list now (re-sorts particles, removes escaped ones).
   virtual void rebuild() = 0;
   // Smallest critical time step over all material pairs present, for impacts
-  // at v_ref (Hertz laws); PFC's sqrt(m/k) for linear contacts.
+  // at v_ref (Hertz laws); PFC's sqrt(m/k) for linear contacts; divided by
+  // sqrt(2D) for the 2D contacts a particle has in a dense packing.
   virtual double critical_time_step(double v_ref) const = 0;
   virtual const char* model_name() const = 0;
 };
