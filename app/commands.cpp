@@ -2,14 +2,15 @@
 
 #include <fmt/core.h>
 #include <omp.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <toml++/toml.h>
 
+#include "summary.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
 #include "talus/dem/builder.hpp"
@@ -17,7 +18,6 @@
 #include "talus/dem/driver.hpp"
 #include "talus/dem/output_observer.hpp"
 #include "talus/io/scenario.hpp"
-#include "summary.hpp"
 
 namespace fs = std::filesystem;
 
@@ -32,8 +32,8 @@ namespace {
 
 void progress_line(double t, double end, double sps, double dt) {
   const double left = sps > 0 ? (end - t) / dt / sps : 0.0;
-  fmt::print(stderr, "\r  t = {:.4f} / {:.4f} s   {:.0f} steps/s   {:.0f} s left   ", t, end,
-             sps, left);
+  fmt::print(stderr, "\r  t = {:.4f} / {:.4f} s   {:.0f} steps/s   {:.0f} s left   ", t, end, sps,
+             left);
   if (t >= end) fmt::print(stderr, "\n");
   std::fflush(stderr);
 }
@@ -97,16 +97,19 @@ int run_command(const RunOptions& opt) {
     out = opt.resume;
     scenario_path = (out / "scenario.toml").string();
     if (!fs::exists(dem::DemOutputs<3>::checkpoint_path(out)))
-      throw InputError(out.string() + ": no checkpoint.bin to resume from (set "
-                                      "output.checkpoint_interval to write checkpoints)");
+      throw InputError(out.string() +
+                       ": no checkpoint.bin to resume from (set "
+                       "output.checkpoint_interval to write checkpoints)");
   } else {
     if (opt.file.empty()) throw InputError("talus run: a scenario file is required");
     scenario_path = opt.file;
   }
-  const auto file = io::load_scenario_file(scenario_path, resume ? std::vector<std::string>{} : opt.sets);
+  const auto file =
+      io::load_scenario_file(scenario_path, resume ? std::vector<std::string>{} : opt.sets);
   const auto sc = io::parse_dem_scenario(file);
   if (!resume) {
-    out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name) : fs::path(opt.out);
+    out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
+                          : fs::path(opt.out);
     prepare_output(out, opt.force);
     // The resolved scenario makes the run reproducible and resumable.
     std::ofstream(out / "scenario.toml") << io::scenario_to_toml(sc);

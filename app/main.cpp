@@ -1,8 +1,8 @@
 // talus command line: a thin layer over the library. Exit codes: 0 success,
 // 2 bad input (nothing ran), 1 failed run.
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 

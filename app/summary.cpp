@@ -1,9 +1,8 @@
 #include "summary.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include "talus/core/version.hpp"
 #include "talus/io/scenario.hpp"
@@ -17,12 +16,6 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
   using nlohmann::json;
   const auto& s = run.system;
   const auto& p = s.particles;
-  double front = -std::numeric_limits<double>::infinity();
-  double top = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    front = std::max(front, p.x[i][0]);
-    top = std::max(top, p.x[i][D - 1]);
-  }
   json walls = json::array();
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const auto& wall = s.walls[w];
@@ -59,8 +52,8 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
         {"rotational_energy_J", dem::rotational_energy(p)},
         {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
         {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
-        {"front_x_m", p.size() ? front : 0.0},
-        {"top_m", p.size() ? top : 0.0},
+        {"front_x_m", dem::front_x(p)},
+        {"top_m", dem::top(p)},
         {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
         {"walls", walls}}},
   };

@@ -29,7 +29,8 @@ TYPED_TEST_SUITE(SettledPacking, Dims);
 // mu 0.277). Both start on a jittered lattice and settle with PFC local damping
 // 0.7, which is switched off before measuring.
 //
-// The 2D step is a fifth of the automatic one: at 0.8 sqrt(m/k) a dense
+// The 2D step is set by hand to 0.2 sqrt(m/k). The single-contact estimate
+// 0.8 sqrt(m/k), once the automatic step, failed here: a dense
 // packing with beta = 0.5 never comes to rest (the modes of particles with
 // several contacts have a higher frequency and damping ratio than one contact,
 // and the explicit dashpot is unstable there; KE stayed ~1e-6 J and the floor

@@ -72,4 +72,3 @@ inline double deg2rad(double deg) { return deg * M_PI / 180.0; }
 inline double rad2deg(double rad) { return rad * 180.0 / M_PI; }
 
 }  // namespace talus
-

@@ -106,7 +106,8 @@ std::vector<Placed> place_particles(const DemScenario& sc, unsigned seed) {
         break;
     }
     if (s.shrink > 0.0) shrink_radii(packed, s.shrink);
-    for (const auto& q : packed) out.push_back({q.position, Vec3::Zero(), Vec3::Zero(), q.radius, mat});
+    for (const auto& q : packed)
+      out.push_back({q.position, Vec3::Zero(), Vec3::Zero(), q.radius, mat});
   }
   return out;
 }
@@ -160,8 +161,8 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   s.domain_max = sc.run.domain_max;
   s.threads = std::max(1, opt.threads);
   for (const auto& w : sc.walls)
-    s.walls.push_back(geometry::make_wall(w, material_of(sc, w.material, "[[walls]] '" + w.name + "'"),
-                                          D));
+    s.walls.push_back(
+        geometry::make_wall(w, material_of(sc, w.material, "[[walls]] '" + w.name + "'"), D));
 
   int64_t id = 0;
   double r_max = 0.0, v_max = 0.0;

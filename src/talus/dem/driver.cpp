@@ -46,7 +46,8 @@ double available_energy(const DemSystem<D>& s) {
   }
   double pe = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    ke += 0.5 * p.m[i] * p.v[i].squaredNorm() + 0.5 / p.inv_I[i] * Space<D>::rot_dot(p.w[i], p.w[i]);
+    ke +=
+        0.5 * p.m[i] * p.v[i].squaredNorm() + 0.5 / p.inv_I[i] * Space<D>::rot_dot(p.w[i], p.w[i]);
     m += p.m[i];
     dmean += 2.0 * p.r[i];
     if (g > 0.0) pe += p.m[i] * (-(s.gravity / g).dot(p.x[i]) - floor) * g;
@@ -73,8 +74,8 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
   for (const auto& w : s.walls) walls_move = walls_move || w.moves();
   if (factor > 0.0 && !walls_move && ke > factor * e_avail)
     throw RunError("t = " + std::to_string(s.time) + " s: kinetic energy " + std::to_string(ke) +
-                   " J exceeds " + std::to_string(factor) + " times the energy available at the start (" +
-                   std::to_string(e_avail) +
+                   " J exceeds " + std::to_string(factor) +
+                   " times the energy available at the start (" + std::to_string(e_avail) +
                    " J): the run is unstable. Reduce the time step (now " + std::to_string(s.dt) +
                    " s, critical " + std::to_string(run.critical_time_step) + " s)");
 }
@@ -105,10 +106,9 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
   const int64_t start = s.step;
   const int64_t health_every = std::max<int64_t>(1, std::min<int64_t>(1000, end / 100 + 1));
   while (s.step < end) {
-    const int64_t next = std::min({end, next_multiple(s.step, c.series_every),
-                                   next_multiple(s.step, c.snapshot_every),
-                                   next_multiple(s.step, c.checkpoint_every),
-                                   next_multiple(s.step, health_every)});
+    const int64_t next = std::min(
+        {end, next_multiple(s.step, c.series_every), next_multiple(s.step, c.snapshot_every),
+         next_multiple(s.step, c.checkpoint_every), next_multiple(s.step, health_every)});
     run.stepper->advance(next - s.step);
     check_health(run, e_avail, c.ke_blowup_factor);
     const bool last = s.step == end;
@@ -132,7 +132,9 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
   return st;
 }
 
-template RunStats run_dem<2>(DemRun<2>&, const RunControl&, const std::vector<DemObserver<2>*>&, bool);
-template RunStats run_dem<3>(DemRun<3>&, const RunControl&, const std::vector<DemObserver<3>*>&, bool);
+template RunStats run_dem<2>(DemRun<2>&, const RunControl&, const std::vector<DemObserver<2>*>&,
+                             bool);
+template RunStats run_dem<3>(DemRun<3>&, const RunControl&, const std::vector<DemObserver<3>*>&,
+                             bool);
 
 }  // namespace talus::dem

@@ -22,11 +22,11 @@ class DemObserver {
 
 struct RunControl {
   double duration = 0.0;
-  int64_t series_every = 100;      // steps
-  int64_t snapshot_every = 0;      // steps; 0 = first and last only
-  int64_t checkpoint_every = 0;    // steps; 0 = none
+  int64_t series_every = 100;    // steps
+  int64_t snapshot_every = 0;    // steps; 0 = first and last only
+  int64_t checkpoint_every = 0;  // steps; 0 = none
   double ke_blowup_factor = 10.0;
-  double progress_seconds = 1.0;   // wall seconds between progress calls
+  double progress_seconds = 1.0;  // wall seconds between progress calls
 };
 
 RunControl make_run_control(const DemScenario& sc, double dt);

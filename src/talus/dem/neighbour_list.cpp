@@ -32,7 +32,8 @@ void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primit
   old_walls_.clear();
   for (std::size_t i = 0; i + 1 < wall_start.size() && i < p.size(); ++i)
     for (int k = wall_start[i]; k < wall_start[i + 1]; ++k)
-      if (!is_zero(wall_history[k])) old_walls_.push_back({{p.id[i], wall_prim[k]}, wall_history[k]});
+      if (!is_zero(wall_history[k]))
+        old_walls_.push_back({{p.id[i], wall_prim[k]}, wall_history[k]});
   std::sort(old_pairs_.begin(), old_pairs_.end(),
             [](const auto& x, const auto& y) { return x.first < y.first; });
   std::sort(old_walls_.begin(), old_walls_.end(),

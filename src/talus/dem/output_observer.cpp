@@ -10,9 +10,17 @@ namespace {
 
 template <int D>
 std::vector<std::string> series_columns(const DemSystem<D>& s) {
-  std::vector<std::string> c = {"time",      "step",          "particles",     "kinetic_energy",
-                                "rotational_energy", "potential_energy", "pair_contacts",
-                                "wall_contacts", "removed"};
+  std::vector<std::string> c = {"time",
+                                "step",
+                                "particles",
+                                "kinetic_energy",
+                                "rotational_energy",
+                                "potential_energy",
+                                "pair_contacts",
+                                "wall_contacts",
+                                "removed",
+                                "front_x",
+                                "top"};
   const char* axes = "xyz";
   for (const auto& w : s.walls) {
     for (int d = 0; d < D; ++d) c.push_back(w.name + "_f" + axes[d]);
@@ -134,7 +142,9 @@ void DemOutputs<D>::on_series(const DemRun<D>& run) {
                              potential_energy(p, s.gravity),
                              static_cast<double>(s.pair_contacts),
                              static_cast<double>(s.wall_contacts),
-                             static_cast<double>(s.removed)};
+                             static_cast<double>(s.removed),
+                             front_x(p),
+                             top(p)};
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const auto& wall = s.walls[w];
     for (int d = 0; d < D; ++d) row.push_back(wall.force[d]);

@@ -15,16 +15,16 @@ inline constexpr double kNever = std::numeric_limits<double>::infinity();
 
 struct MaterialParams {
   std::string name;
-  double density = 0.0;          // kg/m^3
-  double youngs_modulus = 0.0;   // Pa (Hertz laws)
-  double poisson_ratio = 0.3;    // -
-  double restitution = 0.5;      // - (hertz_mindlin)
-  double friction = 0.5;         // Coulomb coefficient mu (tan of the friction angle)
-  double rolling_friction = 0.0; // mu_r (epsd)
-  double normal_stiffness = 0.0; // N/m (linear)
-  double shear_stiffness = 0.0;  // N/m (linear)
-  double damping_ratio = 0.0;    // critical damping ratio beta (linear)
-  double dissipation = 0.0;      // A in s (viscoelastic_hertz)
+  double density = 0.0;           // kg/m^3
+  double youngs_modulus = 0.0;    // Pa (Hertz laws)
+  double poisson_ratio = 0.3;     // -
+  double restitution = 0.5;       // - (hertz_mindlin)
+  double friction = 0.5;          // Coulomb coefficient mu (tan of the friction angle)
+  double rolling_friction = 0.0;  // mu_r (epsd)
+  double normal_stiffness = 0.0;  // N/m (linear)
+  double shear_stiffness = 0.0;   // N/m (linear)
+  double damping_ratio = 0.0;     // critical damping ratio beta (linear)
+  double dissipation = 0.0;       // A in s (viscoelastic_hertz)
 };
 
 enum class ContactModel { Linear, HertzMindlin, ViscoelasticHertz };
@@ -43,31 +43,31 @@ struct ContactParams {
   RollingModel rolling = RollingModel::None;
   PairRule friction_rule = PairRule::Max;
   std::vector<PairOverride> pairs;
-  bool lock_rotation = false;     // Kuen's Model 1: translation only
-  double local_damping = 0.0;     // PFC local damping alpha (default off)
-  bool dashpot_may_pull = true;   // linear: whether the normal dashpot may pull
+  bool lock_rotation = false;       // Kuen's Model 1: translation only
+  double local_damping = 0.0;       // PFC local damping alpha (default off)
+  bool dashpot_may_pull = true;     // linear: whether the normal dashpot may pull
   double tangential_damping = 0.3;  // viscoelastic_hertz gamma_t
   // Kuen rolling resistance
-  double kuen_wall_depth = 0.15e-3;    // u_rr [m]
-  double kuen_particle_factor = 0.5;   // mu_Br per step
+  double kuen_wall_depth = 0.15e-3;   // u_rr [m]
+  double kuen_particle_factor = 0.5;  // mu_Br per step
   // EPSD (type C) rolling resistance
-  double epsd_stiffness_factor = 2.25; // k_r = factor * mu_r^2 * R_eff^2 * k_n (Ai et al.)
-  double epsd_damping_ratio = 0.3;     // eta_r of the critical rotational damping
+  double epsd_stiffness_factor = 2.25;  // k_r = factor * mu_r^2 * R_eff^2 * k_n (Ai et al.)
+  double epsd_damping_ratio = 0.3;      // eta_r of the critical rotational damping
 };
 
 enum class WallKind { Segment, Arc, Plane, Triangle, Mesh, Cylinder };
 
 struct WallMotionParams {
-  Vec3 velocity = Vec3::Zero();       // translation, m/s
-  double move_start = 0.0;            // s
-  double move_stop = kNever;          // s
-  Vec3 angular_velocity = Vec3::Zero(); // rad/s about pivot
+  Vec3 velocity = Vec3::Zero();          // translation, m/s
+  double move_start = 0.0;               // s
+  double move_stop = kNever;             // s
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s about pivot
   Vec3 pivot = Vec3::Zero();
-  double amplitude = 0.0;             // m, vibration x(t) = A sin(2 pi f t + phase) along direction
-  double frequency = 0.0;             // Hz
-  double phase = 0.0;                 // rad
+  double amplitude = 0.0;  // m, vibration x(t) = A sin(2 pi f t + phase) along direction
+  double frequency = 0.0;  // Hz
+  double phase = 0.0;      // rad
   Vec3 direction = Vec3::UnitZ();
-  double remove_at = kNever;          // s
+  double remove_at = kNever;  // s
 };
 
 struct WallParams {
@@ -97,8 +97,8 @@ enum class SourceKind { List, Lattice, RandomFill, Grow, File };
 
 struct SettleParams {
   bool enabled = false;
-  double ke_ratio = 1e-5;   // stop when KE < ratio * m_total * g * L (L = mean diameter)
-  double max_time = 5.0;    // s of simulated settling at most
+  double ke_ratio = 1e-5;  // stop when KE < ratio * m_total * g * L (L = mean diameter)
+  double max_time = 5.0;   // s of simulated settling at most
 };
 
 struct ParticleSourceParams {
@@ -114,29 +114,29 @@ struct ParticleSourceParams {
   // RandomFill / Grow: region is a box or a polygon (2D, counter-clockwise).
   std::vector<Vec3> polygon;
   double radius_min = 0.0, radius_max = 0.0;
-  double porosity = 0.0;        // RandomFill target porosity
-  double packing_fraction = 0.0;// Grow target solid fraction
-  double shrink = 0.0;          // relative radius shrink after filling (Kuen: 0.03)
-  std::optional<int> count;     // number of particles; default from porosity
+  double porosity = 0.0;          // RandomFill target porosity
+  double packing_fraction = 0.0;  // Grow target solid fraction
+  double shrink = 0.0;            // relative radius shrink after filling (Kuen: 0.03)
+  std::optional<int> count;       // number of particles; default from porosity
   SettleParams settle;
-  std::string file;             // File: CSV x,y,z,r
+  std::string file;  // File: CSV x,y,z,r
 };
 
 struct OutputParams {
-  double snapshot_interval = 0.0;   // s, 0 = only first and last
-  double series_interval = 0.0;     // s, 0 = every 100 steps
-  double checkpoint_interval = 0.0; // s, 0 = none
+  double snapshot_interval = 0.0;    // s, 0 = only first and last
+  double series_interval = 0.0;      // s, 0 = every 100 steps
+  double checkpoint_interval = 0.0;  // s, 0 = none
   bool write_snapshots = true;
 };
 
 struct RunParams {
   int dimension = 3;
-  double duration = 0.0;        // s
-  double time_step = 0.0;       // s; 0 = automatic (safety * critical)
-  double safety_factor = 0.8;   // fraction of the critical step (PFC default)
+  double duration = 0.0;       // s
+  double time_step = 0.0;      // s; 0 = automatic (safety * critical)
+  double safety_factor = 0.8;  // fraction of the critical step (PFC default)
   Vec3 gravity = Vec3(0, 0, -9.81);
   Vec3 domain_min = Vec3::Zero(), domain_max = Vec3::Zero();  // particles leaving are removed
-  double skin = 0.0;            // neighbour-list skin, m; 0 = 0.1 * max diameter
+  double skin = 0.0;  // neighbour-list skin, m; 0 = 0.1 * max diameter
   unsigned seed = 1;
   // Stop when the kinetic energy exceeds this factor times the energy available
   // at the start (kinetic plus potential above the floor); 0 disables the check.

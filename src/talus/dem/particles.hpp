@@ -13,8 +13,8 @@ struct Particles {
   using Vec = typename Space<D>::Vec;
   using Rot = typename Space<D>::Rot;
 
-  std::vector<Vec> x, v, f;        // position, velocity, force
-  std::vector<Rot> w, t;           // angular velocity, torque
+  std::vector<Vec> x, v, f;  // position, velocity, force
+  std::vector<Rot> w, t;     // angular velocity, torque
   std::vector<double> r, inv_m, inv_I, m;
   std::vector<int> material;
   std::vector<int64_t> id;         // stable across re-sorting and removal
@@ -23,8 +23,8 @@ struct Particles {
 
   std::size_t size() const { return x.size(); }
 
-  void add(const Vec& pos, const Vec& vel, const Rot& omega, double radius, double density,
-           int mat, int64_t ident) {
+  void add(const Vec& pos, const Vec& vel, const Rot& omega, double radius, double density, int mat,
+           int64_t ident) {
     const double mass = density * Space<D>::volume(radius);
     x.push_back(pos);
     v.push_back(vel);

@@ -127,8 +127,7 @@ class Stepper final : public StepperBase<D> {
           (wall_displacement() - s_.wall_motion_at_build).cwiseAbs().maxCoeff();
       const double half_skin = 0.5 * s_.skin;
       try {
-        if (walls_changed || !(moved <= half_skin * half_skin) || wall_moved > half_skin)
-          rebuild();
+        if (walls_changed || !(moved <= half_skin * half_skin) || wall_moved > half_skin) rebuild();
       } catch (...) {
         error_ = std::current_exception();
       }
@@ -306,8 +305,8 @@ class Stepper final : public StepperBase<D> {
     kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(warm, kin.n);
     kin.w_rel = p.w[i] - p.w[j];
     ContactForce<D> cf;
-    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], kin,
-                   nl.pair_history[k], s_.dt, cf);
+    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], kin, nl.pair_history[k],
+                   s_.dt, cf);
     out.f = cf.fn * kin.n + cf.ft;
     const Rot tq = -Space<D>::cross(kin.n, cf.ft);
     out.ti = ci * tq + cf.roll_torque;

@@ -1,5 +1,7 @@
 #include "talus/dem/system.hpp"
 
+#include <algorithm>
+
 namespace talus::dem {
 
 template <int D>
@@ -31,6 +33,24 @@ double potential_energy(const Particles<D>& p, const typename Space<D>::Vec& g) 
   return e;
 }
 
+template <int D>
+double front_x(const Particles<D>& p) {
+  double m = p.size() ? p.x[0][0] : 0.0;
+  for (const auto& x : p.x) m = std::max(m, x[0]);
+  return m;
+}
+
+template <int D>
+double top(const Particles<D>& p) {
+  double m = p.size() ? p.x[0][D - 1] : 0.0;
+  for (const auto& x : p.x) m = std::max(m, x[D - 1]);
+  return m;
+}
+
+template double front_x<2>(const Particles<2>&);
+template double front_x<3>(const Particles<3>&);
+template double top<2>(const Particles<2>&);
+template double top<3>(const Particles<3>&);
 template struct DemSystem<2>;
 template struct DemSystem<3>;
 template double kinetic_energy<2>(const Particles<2>&);

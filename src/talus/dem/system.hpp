@@ -53,4 +53,11 @@ double rotational_energy(const Particles<D>& p);
 template <int D>
 double potential_energy(const Particles<D>& p, const typename Space<D>::Vec& g);
 
+// Front: the largest x of a particle centre (the peers' definition); top: the
+// highest centre along the last axis (y in 2D, z in 3D). 0 without particles.
+template <int D>
+double front_x(const Particles<D>& p);
+template <int D>
+double top(const Particles<D>& p);
+
 }  // namespace talus::dem

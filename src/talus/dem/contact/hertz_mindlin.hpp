@@ -53,8 +53,8 @@ struct HertzMindlin {
 
   // The history holds the shear displacement xi.
   template <int D>
-  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
-                      double dt, ContactForce<D>& out) {
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k,
+                                ContactHistory<D>& h, double dt, ContactForce<D>& out) {
     const double sqrt_rd = std::sqrt(k.r_eff * k.overlap);
     const double sn = 2.0 * c.h.e_star * sqrt_rd;
     const double st = 8.0 * c.h.g_star * sqrt_rd;
@@ -97,13 +97,14 @@ struct ViscoelasticHertz {
   static Coeffs make(const ContactParams& cp, const MaterialParams& a, const MaterialParams& b,
                      const PairCoefficients& pc) {
     return {{effective_youngs(a, b), effective_shear(a, b), pc.friction},
-            std::max(a.dissipation, b.dissipation), cp.tangential_damping};
+            std::max(a.dissipation, b.dissipation),
+            cp.tangential_damping};
   }
 
   // The history holds the tangential spring xi_t.
   template <int D>
-  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
-                      double dt, ContactForce<D>& out) {
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k,
+                                ContactHistory<D>& h, double dt, ContactForce<D>& out) {
     const double sqrt_d = std::sqrt(k.overlap);
     const double rho = (4.0 / 3.0) * c.h.e_star * std::sqrt(k.r_eff);
     const double overlap_rate = -k.vn;

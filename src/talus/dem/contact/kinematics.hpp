@@ -8,14 +8,14 @@ template <int D>
 struct ContactKinematics {
   using Vec = typename Space<D>::Vec;
   using Rot = typename Space<D>::Rot;
-  Vec n;             // unit normal from j (or the wall) to i
-  double overlap;    // > 0 while touching
-  double r_eff;      // R_i R_j / (R_i + R_j); R_i for a wall
-  double m_eff;      // m_i m_j / (m_i + m_j); m_i for a wall
-  double inertia_eff;// rotational inertia about the contact point, in series (rolling damping)
-  double vn;         // n . (v_i - v_j), negative while approaching
-  Vec vt;            // tangential relative velocity of the contact points
-  Rot w_rel;         // omega_i - omega_j (rolling)
+  Vec n;               // unit normal from j (or the wall) to i
+  double overlap;      // > 0 while touching
+  double r_eff;        // R_i R_j / (R_i + R_j); R_i for a wall
+  double m_eff;        // m_i m_j / (m_i + m_j); m_i for a wall
+  double inertia_eff;  // rotational inertia about the contact point, in series (rolling damping)
+  double vn;           // n . (v_i - v_j), negative while approaching
+  Vec vt;              // tangential relative velocity of the contact points
+  Rot w_rel;           // omega_i - omega_j (rolling)
 };
 
 // Per-contact memory kept in the pair table: the tangential spring (a
@@ -30,7 +30,7 @@ struct ContactHistory {
 // The tangential force acts at the contact point, the rolling torque is a pure couple.
 template <int D>
 struct ContactForce {
-  double fn = 0.0;                                        // along n
+  double fn = 0.0;  // along n
   double kn = 0.0;  // current normal stiffness (scales the rolling spring)
   typename Space<D>::Vec ft = zero_of<typename Space<D>::Vec>();  // tangential force
   typename Space<D>::Rot roll_torque = Space<D>::rot_zero();
@@ -40,7 +40,7 @@ struct ContactForce {
 // length (the contact plane rotates with the particles).
 template <int D>
 TALUS_HOT typename Space<D>::Vec rotate_into_plane(const typename Space<D>::Vec& s,
-                                                const typename Space<D>::Vec& n) {
+                                                   const typename Space<D>::Vec& n) {
   const double len2 = s.squaredNorm();
   if (len2 == 0.0) return s;
   typename Space<D>::Vec p = s - s.dot(n) * n;

@@ -27,8 +27,8 @@ struct LinearSpringDashpot {
 
   // The history holds the shear force itself (PFC's incremental form).
   template <int D>
-  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
-                      double dt, ContactForce<D>& out) {
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k,
+                                ContactHistory<D>& h, double dt, ContactForce<D>& out) {
     const double cn = 2.0 * c.beta * std::sqrt(k.m_eff * c.kn);
     double fn = c.kn * k.overlap - cn * k.vn;
     if (!c.may_pull) fn = std::max(fn, 0.0);

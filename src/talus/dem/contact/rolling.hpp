@@ -14,8 +14,8 @@ struct NoRolling {
   struct Coeffs {};
   static Coeffs make(const ContactParams&, const PairCoefficients&) { return {}; }
   template <int D>
-  TALUS_HOT static void compute(const Coeffs&, const ContactKinematics<D>&, ContactHistory<D>&, double,
-                      ContactForce<D>&) {}
+  TALUS_HOT static void compute(const Coeffs&, const ContactKinematics<D>&, ContactHistory<D>&,
+                                double, ContactForce<D>&) {}
 };
 
 // EPSD / type C (Ai, Chen, Rotter & Ooi 2011): an elastic spring on the relative
@@ -32,8 +32,8 @@ struct EpsdRolling {
   }
 
   template <int D>
-  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
-                      double dt, ContactForce<D>& out) {
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k,
+                                ContactHistory<D>& h, double dt, ContactForce<D>& out) {
     if (c.mu_r <= 0.0) return;
     using Rot = typename Space<D>::Rot;
     Rot w = k.w_rel;
@@ -69,8 +69,8 @@ struct ComposedContact {
     return {Law::make(cp, a, b, pc), Rolling::make(cp, pc)};
   }
   template <int D>
-  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k, ContactHistory<D>& h,
-                      double dt, ContactForce<D>& out) {
+  TALUS_HOT static void compute(const Coeffs& c, const ContactKinematics<D>& k,
+                                ContactHistory<D>& h, double dt, ContactForce<D>& out) {
     Law::compute(c.law, k, h, dt, out);
     Rolling::compute(c.roll, k, h, dt, out);
   }
