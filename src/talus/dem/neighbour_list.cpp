@@ -8,41 +8,35 @@
 
 namespace talus::dem {
 
-namespace {
-bool is_zero(const ContactHistory<2>& h) { return h.shear.isZero(0.0) && h.roll == 0.0; }
-bool is_zero(const ContactHistory<3>& h) { return h.shear.isZero(0.0) && h.roll.isZero(0.0); }
-}  // namespace
 
 template <int D>
 void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primitive>& prims,
                              double skin) {
   skin_ = skin;
-  // Remember the history of touching contacts by particle id before re-sorting.
-  old_pairs_.clear();
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (is_zero(pair_history[k])) continue;
-    const int64_t a = p.id[pairs[k].i], b = p.id[pairs[k].j];
-    ContactHistory<D> h = pair_history[k];
-    if (a > b) {  // stored as seen from the particle with the smaller id
-      h.shear = -h.shear;
-      h.roll = -h.roll;
-    }
-    old_pairs_.push_back({{std::min(a, b), std::max(a, b)}, h});
+  // Keep the old lists, indexed by the particle order before this build's
+  // re-sort; carry_history finds each new contact's old one through the
+  // permutation, in O(1) per contact.
+  old_pairs_.swap(pairs);
+  old_pair_history_.swap(pair_history);
+  old_wall_start_.swap(wall_start);
+  old_wall_prim_.swap(wall_prim);
+  old_wall_history_.swap(wall_history);
+  const int n_old = static_cast<int>(p.size());
+  old_row_start_.assign(n_old + 1, 0);
+  for (const Pair& q : old_pairs_) ++old_row_start_[std::min(q.i, q.j) + 1];
+  for (int i = 0; i < n_old; ++i) old_row_start_[i + 1] += old_row_start_[i];
+  old_rows_.resize(old_pairs_.size());
+  {
+    std::vector<int> fill(old_row_start_.begin(), old_row_start_.end() - 1);
+    for (std::size_t k = 0; k < old_pairs_.size(); ++k)
+      old_rows_[fill[std::min(old_pairs_[k].i, old_pairs_[k].j)]++] = static_cast<int>(k);
   }
-  old_walls_.clear();
-  for (std::size_t i = 0; i + 1 < wall_start.size() && i < p.size(); ++i)
-    for (int k = wall_start[i]; k < wall_start[i + 1]; ++k)
-      if (!is_zero(wall_history[k]))
-        old_walls_.push_back({{p.id[i], wall_prim[k]}, wall_history[k]});
-  std::sort(old_pairs_.begin(), old_pairs_.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::sort(old_walls_.begin(), old_walls_.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
+  if (old_wall_start_.size() != static_cast<std::size_t>(n_old) + 1) old_wall_start_.assign(n_old + 1, 0);
 
   double r_max = 0.0;
   for (double r : p.r) r_max = std::max(r_max, r);
   const double cell = std::max(2.0 * r_max + skin, 1e-12);
-  sort_into_cells(p, cell);
+  sort_into_cells(p, cell);  // fills order_
   find_pairs(p, cell);
   find_walls(p, prims);
   carry_history(p);
@@ -91,6 +85,7 @@ void NeighbourList<D>::sort_into_cells(Particles<D>& p, double cell) {
   std::vector<int> order(n), fill(cell_start_.begin(), cell_start_.end() - 1);
   for (int i = 0; i < n; ++i) order[fill[cell_of[i]]++] = i;
   p.permute(order);
+  order_.swap(order);
   cell_size_ = h;
 }
 
@@ -156,31 +151,33 @@ void NeighbourList<D>::find_walls(const Particles<D>& p,
 }
 
 template <int D>
-void NeighbourList<D>::carry_history(const Particles<D>& p) {
+void NeighbourList<D>::carry_history(const Particles<D>&) {
   pair_history.assign(pairs.size(), ContactHistory<D>{});
-  if (!old_pairs_.empty())
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-      const int64_t a = p.id[pairs[k].i], b = p.id[pairs[k].j];
-      const PairKey key{std::min(a, b), std::max(a, b)};
-      auto it = std::lower_bound(old_pairs_.begin(), old_pairs_.end(), key,
-                                 [](const auto& e, const PairKey& k2) { return e.first < k2; });
-      if (it != old_pairs_.end() && it->first == key) {
-        pair_history[k] = it->second;
-        if (a > b) {
-          pair_history[k].shear = -pair_history[k].shear;
-          pair_history[k].roll = -pair_history[k].roll;
-        }
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const int oi = order_[pairs[k].i], oj = order_[pairs[k].j];
+    const int lo = std::min(oi, oj), hi = std::max(oi, oj);
+    for (int q = old_row_start_[lo]; q < old_row_start_[lo + 1]; ++q) {
+      const Pair& old = old_pairs_[old_rows_[q]];
+      if (old.i + old.j - lo != hi) continue;
+      // The spring is relative motion of i against j: swapping them flips it.
+      pair_history[k] = old_pair_history_[old_rows_[q]];
+      if (old.i != oi) {
+        pair_history[k].shear = -pair_history[k].shear;
+        pair_history[k].roll = -pair_history[k].roll;
       }
+      break;
     }
+  }
   wall_history.assign(wall_prim.size(), ContactHistory<D>{});
-  if (!old_walls_.empty())
-    for (std::size_t i = 0; i < p.size(); ++i)
-      for (int k = wall_start[i]; k < wall_start[i + 1]; ++k) {
-        const PairKey key{p.id[i], wall_prim[k]};
-        auto it = std::lower_bound(old_walls_.begin(), old_walls_.end(), key,
-                                   [](const auto& e, const PairKey& k2) { return e.first < k2; });
-        if (it != old_walls_.end() && it->first == key) wall_history[k] = it->second;
-      }
+  for (std::size_t i = 0; i + 1 < wall_start.size(); ++i) {
+    const int oi = order_[i];
+    for (int k = wall_start[i]; k < wall_start[i + 1]; ++k)
+      for (int q = old_wall_start_[oi]; q < old_wall_start_[oi + 1]; ++q)
+        if (old_wall_prim_[q] == wall_prim[k]) {
+          wall_history[k] = old_wall_history_[q];
+          break;
+        }
+  }
 }
 
 template <int D>

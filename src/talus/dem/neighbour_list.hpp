@@ -56,12 +56,12 @@ class NeighbourList {
   void carry_history(const Particles<D>& p);
   void build_incidence(int n);
 
-  struct PairKey {
-    int64_t a, b;
-    bool operator<(const PairKey& o) const { return a < o.a || (a == o.a && b < o.b); }
-    bool operator==(const PairKey& o) const { return a == o.a && b == o.b; }
-  };
-  std::vector<std::pair<PairKey, ContactHistory<D>>> old_pairs_, old_walls_;
+  // The lists of the previous build, and its pairs grouped by their lower
+  // particle index (CSR), to carry contact history over.
+  std::vector<Pair> old_pairs_;
+  std::vector<ContactHistory<D>> old_pair_history_, old_wall_history_;
+  std::vector<int> old_wall_start_, old_wall_prim_, old_row_start_, old_rows_;
+  std::vector<int> order_;  // new index k held old index order_[k]
 
   std::vector<Vec> x_ref_;
   double skin_ = 0.0;
