@@ -7,7 +7,7 @@ namespace talus::dem {
 
 namespace {
 constexpr const char* kMagic = "talus-dem-checkpoint";
-constexpr int32_t kVersion = 1;
+constexpr int32_t kVersion = 2;
 
 struct PairIndex {
   int32_t i, j;
@@ -22,7 +22,7 @@ void transfer(Ar& ar, System& s) {
   ar(p.material), ar(p.id), ar(p.contacts), ar(p.wall_contacts);
   ar(s.pair_contacts), ar(s.wall_contacts);
   auto& nl = s.neighbours;
-  ar(nl.wall_start), ar(nl.wall_prim), ar(nl.incidence_start), ar(nl.incidence), ar(nl.builds);
+  ar(nl.wall_start), ar(nl.wall_prim), ar(nl.builds);
   ar(nl.reference_positions());
 }
 

@@ -40,7 +40,6 @@ void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primit
   find_pairs(p, cell);
   find_walls(p, prims);
   carry_history(p);
-  build_incidence(static_cast<int>(p.size()));
   x_ref_ = p.x;
   ++builds;
 }
@@ -178,33 +177,6 @@ void NeighbourList<D>::carry_history(const Particles<D>&) {
           break;
         }
   }
-}
-
-template <int D>
-void NeighbourList<D>::build_incidence(int n) {
-  incidence_start.assign(n + 1, 0);
-  for (const Pair& q : pairs) {
-    ++incidence_start[q.i + 1];
-    ++incidence_start[q.j + 1];
-  }
-  for (int i = 0; i < n; ++i) incidence_start[i + 1] += incidence_start[i];
-  incidence.resize(2 * pairs.size());
-  std::vector<int> fill(incidence_start.begin(), incidence_start.end() - 1);
-  // Pair index k is stored as 2k (particle is i) or 2k+1 (particle is j), in pair order.
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    incidence[fill[pairs[k].i]++] = static_cast<int>(2 * k);
-    incidence[fill[pairs[k].j]++] = static_cast<int>(2 * k + 1);
-  }
-}
-
-template <int D>
-bool NeighbourList<D>::stale(const Particles<D>& p, double wall_motion) const {
-  if (x_ref_.size() != p.size()) return true;
-  const double limit = 0.25 * skin_ * skin_;
-  if (wall_motion * wall_motion > limit) return true;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (!((p.x[i] - x_ref_[i]).squaredNorm() <= limit)) return true;  // also catches NaN
-  return false;
 }
 
 template class NeighbourList<2>;

@@ -30,31 +30,23 @@ class NeighbourList {
   // Per particle (CSR): wall primitives closer than r + skin, with their history.
   std::vector<int> wall_start, wall_prim;
   std::vector<ContactHistory<D>> wall_history;
-  // Per particle (CSR): the pairs it belongs to, in pair order (race-free gather).
-  std::vector<int> incidence_start, incidence;
 
   int builds = 0;
 
   // Rebuilds the lists; permutes `p` into cell order (history follows by id).
   void build(Particles<D>& p, const std::vector<geometry::Primitive>& prims, double skin);
 
-  // True when some particle moved more than skin/2 since the last build, or a
-  // wall moved more than that.
-  bool stale(const Particles<D>& p, double wall_motion) const;
 
   double skin() const { return skin_; }
-  // Checkpoint support: the reference positions of the last build, and the
-  // incidence table recomputed from restored pairs.
+  // Checkpoint support: the reference positions of the last build.
   std::vector<Vec>& reference_positions() { return x_ref_; }
   void set_skin(double skin) { skin_ = skin; }
-  void restore_incidence(int n) { build_incidence(n); }
 
  private:
   void sort_into_cells(Particles<D>& p, double cell);
   void find_pairs(const Particles<D>& p, double cell);
   void find_walls(const Particles<D>& p, const std::vector<geometry::Primitive>& prims);
   void carry_history(const Particles<D>& p);
-  void build_incidence(int n);
 
   // The lists of the previous build, and its pairs grouped by their lower
   // particle index (CSR), to carry contact history over.

@@ -50,7 +50,6 @@ class Stepper final : public StepperBase<D> {
 
   void resume() override {
     update_walls(true);
-    s_.neighbours.restore_incidence(static_cast<int>(s_.particles.size()));
   }
 
   void rebuild() override {
