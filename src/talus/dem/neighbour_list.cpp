@@ -8,7 +8,6 @@
 
 namespace talus::dem {
 
-
 template <int D>
 void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primitive>& prims,
                              double skin) {
@@ -31,7 +30,8 @@ void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primit
     for (std::size_t k = 0; k < old_pairs_.size(); ++k)
       old_rows_[fill[std::min(old_pairs_[k].i, old_pairs_[k].j)]++] = static_cast<int>(k);
   }
-  if (old_wall_start_.size() != static_cast<std::size_t>(n_old) + 1) old_wall_start_.assign(n_old + 1, 0);
+  if (old_wall_start_.size() != static_cast<std::size_t>(n_old) + 1)
+    old_wall_start_.assign(n_old + 1, 0);
 
   double r_max = 0.0;
   for (double r : p.r) r_max = std::max(r_max, r);
@@ -100,13 +100,20 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
         const bool positive = dz > 0 || (dz == 0 && (dy > 0 || (dy == 0 && dx >= 0)));
         if (positive) stencil.push_back(s);
       }
-  const int n = static_cast<int>(p.size());
-  const double h = cell_size_;
-  pairs.clear();
-  for (int cz = 0; cz < dims_[2]; ++cz)
-    for (int cy = 0; cy < dims_[1]; ++cy)
-      for (int cx = 0; cx < dims_[0]; ++cx) {
-        const int c = (cz * dims_[1] + cy) * dims_[0] + cx;
+  // The cells are cut into chunks searched as OpenMP tasks: when the build
+  // runs inside `omp single` the waiting threads take them. The chunks are
+  // joined in cell order, so the list is the same for any thread count.
+  const int total = dims_[0] * dims_[1] * dims_[2];
+  const int chunks = std::min(total, 16);
+  std::vector<std::vector<Pair>> found(chunks);
+  for (int t = 0; t < chunks; ++t) {
+#pragma omp task default(shared) firstprivate(t)
+    {
+      auto& out = found[t];
+      const int c0 = static_cast<int>(static_cast<int64_t>(total) * t / chunks);
+      const int c1 = static_cast<int>(static_cast<int64_t>(total) * (t + 1) / chunks);
+      for (int c = c0; c < c1; ++c) {
+        const int cx = c % dims_[0], cy = (c / dims_[0]) % dims_[1], cz = c / (dims_[0] * dims_[1]);
         for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
           for (const auto& s : stencil) {
             const int nx = cx + s[0], ny = cy + s[1], nz = cz + s[2];
@@ -116,13 +123,16 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
             const int j0 = nc == c ? i + 1 : cell_start_[nc];
             for (int j = j0; j < cell_start_[nc + 1]; ++j) {
               const double cut = p.r[i] + p.r[j] + skin_;
-              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) pairs.push_back(make_pair(p, i, j));
+              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) out.push_back(make_pair(p, i, j));
             }
           }
         }
       }
-  (void)n;
-  (void)h;
+    }
+  }
+#pragma omp taskwait
+  pairs.clear();
+  for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
 }
 
 template <int D>

@@ -36,7 +36,6 @@ class NeighbourList {
   // Rebuilds the lists; permutes `p` into cell order (history follows by id).
   void build(Particles<D>& p, const std::vector<geometry::Primitive>& prims, double skin);
 
-
   double skin() const { return skin_; }
   // Checkpoint support: the reference positions of the last build.
   std::vector<Vec>& reference_positions() { return x_ref_; }

@@ -48,9 +48,7 @@ class Stepper final : public StepperBase<D> {
     compute_forces();
   }
 
-  void resume() override {
-    update_walls(true);
-  }
+  void resume() override { update_walls(true); }
 
   void rebuild() override {
     remove_escaped();
