@@ -3,6 +3,7 @@
 BUILD       ?= build
 BUILD_SAN   ?= build-sanitize
 JOBS        ?= $(shell nproc)
+MAKEFLAGS   += --no-print-directory
 CMAKE_FLAGS ?=
 
 .PHONY: deps build demo test test-sanitize bench format clean

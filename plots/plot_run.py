@@ -43,11 +43,13 @@ def main():
     walls = sorted({c[: -len("_fx")] for c in s if c.endswith("_fx")})
     if walls:
         fig, ax = plt.subplots(figsize=(7, 4))
-        for w in walls:
+        # Colour per wall, line style per axis, so a dozen curves stay apart.
+        styles = {"x": "-", "y": "--", "z": ":"}
+        for k, w in enumerate(walls):
             for axis in ("x", "y", "z"):
                 key = f"{w}_f{axis}"
                 if key in s and any(abs(v) > 0 for v in s[key]):
-                    ax.plot(t, s[key], label=f"{w} F{axis}")
+                    ax.plot(t, s[key], styles[axis], color=f"C{k % 10}", label=f"{w} F{axis}")
         ax.set_xlabel("time [s]")
         ax.set_ylabel("force on wall [N]")
         ax.legend(fontsize=7, ncol=2)
