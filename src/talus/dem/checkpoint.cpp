@@ -7,7 +7,7 @@ namespace talus::dem {
 
 namespace {
 constexpr const char* kMagic = "talus-dem-checkpoint";
-constexpr int32_t kVersion = 2;
+constexpr int32_t kVersion = 3;
 
 struct PairIndex {
   int32_t i, j;
@@ -17,7 +17,8 @@ struct PairIndex {
 template <int D, class Ar, class System>
 void transfer(Ar& ar, System& s) {
   auto& p = s.particles;
-  ar(s.time), ar(s.step), ar(s.dt), ar(s.removed), ar(s.skin), ar(s.wall_motion_at_build);
+  ar(s.time), ar(s.step), ar(s.dt), ar(s.removed), ar(s.skin), ar(s.wall_displacement_at_build),
+      ar(s.wall_angle_at_build);
   ar(p.x), ar(p.v), ar(p.f), ar(p.w), ar(p.t), ar(p.r), ar(p.inv_m), ar(p.inv_I), ar(p.m);
   ar(p.material), ar(p.id), ar(p.contacts), ar(p.wall_contacts);
   ar(s.pair_contacts), ar(s.wall_contacts);

@@ -53,7 +53,12 @@ class Stepper final : public StepperBase<D> {
   void rebuild() override {
     remove_escaped();
     s_.neighbours.build(s_.particles, s_.primitives, s_.skin);
-    s_.wall_motion_at_build = wall_displacement();
+    s_.wall_displacement_at_build.clear();
+    s_.wall_angle_at_build.clear();
+    for (const auto& w : s_.walls) {
+      s_.wall_displacement_at_build.push_back(w.displacement(s_.time));
+      s_.wall_angle_at_build.push_back(w.rotation_angle(s_.time));
+    }
   }
 
   // All threads run the whole step loop in one parallel region; the loops of
@@ -120,8 +125,7 @@ class Stepper final : public StepperBase<D> {
       max_moved_ = 0.0;
       s_.time = static_cast<double>(s_.step + 1) * dt;
       const bool walls_changed = update_walls(false);
-      const double wall_moved =
-          (wall_displacement() - s_.wall_motion_at_build).cwiseAbs().maxCoeff();
+      const double wall_moved = wall_motion_since_build();
       const double half_skin = 0.5 * s_.skin;
       try {
         if (walls_changed || !(moved <= half_skin * half_skin) || wall_moved > half_skin) rebuild();
@@ -204,26 +208,25 @@ class Stepper final : public StepperBase<D> {
     return changed;
   }
 
-  Vec3 wall_displacement() const {
-    // Largest displacement of any moving wall point, as a vector bound.
-    Vec3 m = Vec3::Zero();
-    for (const auto& w : s_.walls) {
+  // Largest distance any point of a moving wall has travelled since the last
+  // build (translation and vibration exactly, rotation bounded by the angle
+  // times the farthest reach from the pivot).
+  double wall_motion_since_build() const {
+    double moved = 0.0;
+    for (std::size_t k = 0; k < s_.walls.size(); ++k) {
+      const auto& w = s_.walls[k];
       if (!w.moves()) continue;
-      Vec3 lo, hi;
-      w.bounds(lo, hi);
-      (void)lo;
-      (void)hi;
-      m += w.displacement(s_.time).cwiseAbs();
+      double d = (w.displacement(s_.time) - s_.wall_displacement_at_build[k]).norm();
       if (w.motion.angular_velocity.squaredNorm() > 0.0) {
-        // A rotating wall: bound the motion of its farthest point.
         double reach = 0.0;
         for (const auto& prim : w.reference)
           for (const Vec3& q : {prim.p0, prim.p1, prim.p2})
             reach = std::max(reach, (q - w.motion.pivot).norm() + prim.radius);
-        m += Vec3::Constant(std::abs(w.rotation_angle(s_.time)) * reach);
+        d += std::abs(w.rotation_angle(s_.time) - s_.wall_angle_at_build[k]) * reach;
       }
+      moved = std::max(moved, d);
     }
-    return m;
+    return moved;
   }
 
   void remove_escaped() {

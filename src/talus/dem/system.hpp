@@ -34,7 +34,10 @@ struct DemSystem {
   std::vector<geometry::Primitive> primitives;
   std::vector<int> primitive_wall;
   NeighbourList<D> neighbours;
-  Vec3 wall_motion_at_build = Vec3::Zero();  // wall displacement bound at the last build
+  // Displacement and rotation angle of each wall at the last neighbour build:
+  // the list is rebuilt once a wall has moved half the skin since then.
+  std::vector<Vec3> wall_displacement_at_build;
+  std::vector<double> wall_angle_at_build;
 
   // Filled by every step.
   int64_t pair_contacts = 0;
