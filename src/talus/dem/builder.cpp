@@ -175,6 +175,9 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
     v_max = std::max(v_max, q.v.norm() + q.w.norm() * q.r);
   }
   check_inside(sc, s);
+  // Kuen's Model 1 (translation only): no particle may start spinning either.
+  if (sc.contact.lock_rotation)
+    for (auto& w : s.particles.w) w = Space<D>::rot_zero();
   s.skin = sc.run.skin > 0.0 ? sc.run.skin : 0.2 * r_max;
 
   run->stepper = make_stepper<D>(s);
