@@ -481,7 +481,7 @@ class Stepper final : public StepperBase<D> {
     const int nw = static_cast<int>(s_.walls.size());
     Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * nw * 2;
     int64_t touching = 0;
-#pragma omp for schedule(dynamic, 256)
+#pragma omp for schedule(static)
     for (int i = 0; i < n; ++i) {
       p.wall_contacts[i] = 0;
       for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
