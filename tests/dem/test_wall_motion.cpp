@@ -4,6 +4,7 @@
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/driver.hpp"
+#include "talus/geometry/stl.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -35,4 +36,56 @@ TEST(WallMotion, VibratingWallFindsParticlesOnEitherSide) {
   // The floor moves at up to 2 pi f A = 0.063 m/s; the struck sphere leaves downwards.
   EXPECT_LT(p.v[0].z(), -0.01);
   EXPECT_LT(p.x[0].z(), -amplitude - 0.5 * r);
+}
+
+// A floor given as an STL mesh of 800 small triangles acts like the plane it
+// tiles: the same rebound, and the neighbour list offers the sphere only the
+// few triangles near it (the primitives are binned into the cell grid).
+TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
+  const double r = 1e-3, cell = 0.01;
+  std::vector<geometry::Primitive> tris;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) {
+      const Vec3 a(i * cell - 0.1, j * cell - 0.1, 0),
+          b = a + Vec3(cell, 0, 0), c = a + Vec3(cell, cell, 0), d = a + Vec3(0, cell, 0);
+      geometry::Primitive t1, t2;
+      ASSERT_TRUE(geometry::make_triangle(a, b, c, t1));
+      ASSERT_TRUE(geometry::make_triangle(a, c, d, t2));
+      tris.push_back(t1);
+      tris.push_back(t2);
+    }
+  const std::string stl = ::testing::TempDir() + "/tiled_floor.stl";
+  geometry::write_stl(stl, tris, true);
+
+  auto rebound = [&](bool mesh, std::size_t* candidates) {
+    DemScenario sc = scenario(3, ContactModel::HertzMindlin, 1e-6, Vec3::Zero());
+    sc.materials = {hertz_material("glass", 2500, 1e7, 0.3, 0.5, 0.5), rigid_material("steel")};
+    if (mesh) {
+      WallParams w;
+      w.name = "floor";
+      w.kind = WallKind::Mesh;
+      w.material = "steel";
+      w.file = stl;
+      sc.walls.push_back(w);
+    } else {
+      sc.walls.push_back(floor_wall<3>("steel"));
+    }
+    // Inside one triangle, far from its edges compared with the contact radius (~0.1 mm).
+    add_balls(sc, {ball(Vec3(0.0033, 0.0071, 1.05 * r), Vec3(0, 0, -0.1), r, "glass")});
+    auto run = build_dem<3>(sc, {});
+    RunControl c;
+    c.duration = 2e-3;
+    run_dem<3>(*run, c, {}, true);
+    if (candidates) {
+      const auto& nl = run->system.neighbours;
+      *candidates = static_cast<std::size_t>(nl.wall_start[1] - nl.wall_start[0]);
+    }
+    return run->system.particles.v[0].z();
+  };
+  std::size_t candidates = 0;
+  const double on_plane = rebound(false, nullptr), on_mesh = rebound(true, &candidates);
+  EXPECT_GT(on_plane, 0.04);  // it did bounce (e = 0.5 of 0.1 m/s)
+  EXPECT_NEAR(on_mesh, on_plane, 1e-12);
+  EXPECT_GE(candidates, 1u);
+  EXPECT_LE(candidates, 8u);  // of 800
 }

@@ -138,25 +138,46 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
 template <int D>
 void NeighbourList<D>::find_walls(const Particles<D>& p,
                                   const std::vector<geometry::Primitive>& prims) {
+  // Each primitive visits only the cells its box (grown by r_max + skin)
+  // overlaps, so a mesh of many small triangles costs what it covers, not
+  // particles x triangles. Candidates are collected per primitive, then grouped
+  // by particle with a stable counting sort: per particle they stay in
+  // primitive order, as the contact history expects.
   const int n = static_cast<int>(p.size());
-  wall_start.assign(n + 1, 0);
-  wall_prim.clear();
-  std::vector<Vec3> lo(prims.size()), hi(prims.size());
-  for (std::size_t k = 0; k < prims.size(); ++k) geometry::bounds(prims[k], lo[k], hi[k]);
-  for (int i = 0; i < n; ++i) {
-    const double cut = p.r[i] + skin_;
-    const Vec3 x = Space<D>::to3(p.x[i]);
-    for (std::size_t k = 0; k < prims.size(); ++k) {
-      bool outside = false;
-      for (int d = 0; d < D; ++d)
-        outside = outside || x[d] < lo[k][d] - cut || x[d] > hi[k][d] + cut;
-      if (outside) continue;
-      geometry::Closest<D> c;
-      if (geometry::closest_point<D>(prims[k], p.x[i], cut, c))
-        wall_prim.push_back(static_cast<int>(k));
+  double r_max = 0.0;
+  for (double r : p.r) r_max = std::max(r_max, r);
+  std::vector<std::pair<int, int>> found;  // (particle, primitive)
+  for (std::size_t k = 0; k < prims.size(); ++k) {
+    Vec3 lo, hi;
+    geometry::bounds(prims[k], lo, hi);
+    int c0[3] = {0, 0, 0}, c1[3] = {0, 0, 0};
+    for (int d = 0; d < D; ++d) {
+      const double grow = r_max + skin_;
+      const double a = (lo[d] - grow - lo_[d]) / cell_size_,
+                   b = (hi[d] + grow - lo_[d]) / cell_size_;
+      c0[d] =
+          std::isfinite(a) ? static_cast<int>(std::clamp(std::floor(a), 0.0, dims_[d] - 1.0)) : 0;
+      c1[d] = std::isfinite(b) ? static_cast<int>(std::clamp(std::floor(b), 0.0, dims_[d] - 1.0))
+                               : dims_[d] - 1;
+      if (b < 0.0 || a > dims_[d]) c1[d] = c0[d] - 1;  // entirely outside the grid
     }
-    wall_start[i + 1] = static_cast<int>(wall_prim.size());
+    for (int cz = c0[2]; cz <= c1[2]; ++cz)
+      for (int cy = c0[1]; cy <= c1[1]; ++cy)
+        for (int cx = c0[0]; cx <= c1[0]; ++cx) {
+          const int c = (cz * dims_[1] + cy) * dims_[0] + cx;
+          for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
+            geometry::Closest<D> hit;
+            if (geometry::closest_point<D>(prims[k], p.x[i], p.r[i] + skin_, hit))
+              found.push_back({i, static_cast<int>(k)});
+          }
+        }
   }
+  wall_start.assign(n + 1, 0);
+  for (const auto& f : found) ++wall_start[f.first + 1];
+  for (int i = 0; i < n; ++i) wall_start[i + 1] += wall_start[i];
+  wall_prim.resize(found.size());
+  std::vector<int> fill(wall_start.begin(), wall_start.end() - 1);
+  for (const auto& f : found) wall_prim[fill[f.first]++] = f.second;
 }
 
 template <int D>
