@@ -89,3 +89,40 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
   EXPECT_GE(candidates, 1u);
   EXPECT_LE(candidates, 8u);  // of 800
 }
+
+// Settling happens before t = 0 with every wall in place, even a gate removed
+// at t = 0 (Kuen's variant I): the packing must still be behind the gate when
+// the run starts, and the gate must be gone after it.
+TEST(Settling, GateRemovedAtStartHoldsThePackingWhileItSettles) {
+  const double gate_x = 0.03;
+  DemScenario sc = scenario(2, ContactModel::Linear, 0.0, Vec3(0, -9.81, 0));
+  sc.materials = {linear_material("sand", 2672, 1e6, 1e6, 0.5, 0.3),
+                  linear_material("steel", 1.0, 1e6, 1e6, 0.5, 0.4)};
+  sc.walls.push_back(floor_wall<2>("steel"));
+  WallParams back = flat_wall<2>("back", "steel", Vec3::Zero(), Vec3::UnitX());
+  WallParams gate = flat_wall<2>("gate", "steel", Vec3(gate_x, 0, 0), -Vec3::UnitX());
+  gate.motion.remove_at = 0.0;
+  sc.walls.push_back(back);
+  sc.walls.push_back(gate);
+  ParticleSourceParams fill;
+  fill.kind = SourceKind::RandomFill;
+  fill.material = "sand";
+  fill.box_min = Vec3(0, 0, 0);
+  fill.box_max = Vec3(gate_x, 0.06, 0);
+  fill.radius_min = 1e-3;
+  fill.radius_max = 1.5e-3;
+  fill.porosity = 0.25;
+  fill.settle.enabled = true;
+  fill.settle.max_time = 0.3;
+  sc.sources.push_back(fill);
+  auto run = build_dem<2>(sc, {});
+  const auto& p = run->system.particles;
+  ASSERT_GT(p.size(), 50u);
+  EXPECT_GT(run->settle_time, 0.05);
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_LT(p.x[i].x() + p.r[i], gate_x + 1e-4);
+  // After the release the column spreads past the gate's former place.
+  RunControl c;
+  c.duration = 0.3;
+  run_dem<2>(*run, c, {}, true);
+  EXPECT_GT(front_x(run->system.particles), gate_x + 0.01);
+}

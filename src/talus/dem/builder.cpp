@@ -140,11 +140,13 @@ double settle(DemRun<D>& run, const SettleParams& sp) {
   d_mean /= std::max<std::size_t>(1, p.size());
   const double threshold = sp.ke_ratio * m_total * s.gravity.norm() * d_mean;
   const int64_t chunk = std::max<int64_t>(1, static_cast<int64_t>(1e-3 / s.dt));
+  s.settling = true;
   run.stepper->prime();
   while (s.time < sp.max_time) {
     run.stepper->advance(chunk);
     if (kinetic_energy(p) < threshold && s.time > 0.05) break;
   }
+  s.settling = false;
   return s.time;
 }
 

@@ -56,8 +56,8 @@ class Stepper final : public StepperBase<D> {
     s_.wall_displacement_at_build.clear();
     s_.wall_angle_at_build.clear();
     for (const auto& w : s_.walls) {
-      s_.wall_displacement_at_build.push_back(w.displacement(s_.time));
-      s_.wall_angle_at_build.push_back(w.rotation_angle(s_.time));
+      s_.wall_displacement_at_build.push_back(w.displacement(wall_time()));
+      s_.wall_angle_at_build.push_back(w.rotation_angle(wall_time()));
     }
   }
 
@@ -181,25 +181,25 @@ class Stepper final : public StepperBase<D> {
       s_.primitive_wall.clear();
       active_.clear();
       for (std::size_t w = 0; w < s_.walls.size(); ++w) {
-        s_.walls[w].update(s_.time);
+        s_.walls[w].update(wall_time());
         for (const auto& prim : s_.walls[w].current) {
           s_.primitives.push_back(prim);
           s_.primitive_wall.push_back(static_cast<int>(w));
         }
-        active_.push_back(s_.walls[w].active(s_.time));
+        active_.push_back(wall_active(s_.walls[w]));
       }
       return true;
     }
     std::size_t k = 0;
     for (std::size_t w = 0; w < s_.walls.size(); ++w) {
       auto& wall = s_.walls[w];
-      const bool act = wall.active(s_.time);
+      const bool act = wall_active(wall);
       if (act != active_[w]) {
         active_[w] = act;
         changed = true;
       }
       if (wall.moves()) {
-        wall.update(s_.time);
+        wall.update(wall_time());
         for (const auto& prim : wall.current) s_.primitives[k++] = prim;
       } else {
         k += wall.current.size();
@@ -207,6 +207,12 @@ class Stepper final : public StepperBase<D> {
     }
     return changed;
   }
+
+  // While the initial packing settles (before t = 0) every wall stands as it
+  // is at t = 0 and is present, even one removed at t = 0: the gate holds the
+  // release mass until the run starts.
+  double wall_time() const { return s_.settling ? 0.0 : s_.time; }
+  bool wall_active(const geometry::Wall& w) const { return s_.settling || w.active(s_.time); }
 
   // Largest distance any point of a moving wall has travelled since the last
   // build (translation and vibration exactly, rotation bounded by the angle
@@ -216,13 +222,13 @@ class Stepper final : public StepperBase<D> {
     for (std::size_t k = 0; k < s_.walls.size(); ++k) {
       const auto& w = s_.walls[k];
       if (!w.moves()) continue;
-      double d = (w.displacement(s_.time) - s_.wall_displacement_at_build[k]).norm();
+      double d = (w.displacement(wall_time()) - s_.wall_displacement_at_build[k]).norm();
       if (w.motion.angular_velocity.squaredNorm() > 0.0) {
         double reach = 0.0;
         for (const auto& prim : w.reference)
           for (const Vec3& q : {prim.p0, prim.p1, prim.p2})
             reach = std::max(reach, (q - w.motion.pivot).norm() + prim.radius);
-        d += std::abs(w.rotation_angle(s_.time) - s_.wall_angle_at_build[k]) * reach;
+        d += std::abs(w.rotation_angle(wall_time()) - s_.wall_angle_at_build[k]) * reach;
       }
       moved = std::max(moved, d);
     }
@@ -455,8 +461,8 @@ class Stepper final : public StepperBase<D> {
     pivots_.resize(nw);
     moving_.resize(nw);
     for (int w = 0; w < nw; ++w) {
-      pivots_[w] = s_.walls[w].pivot_at(s_.time);
-      moving_[w] = s_.walls[w].moves() ? 1 : 0;
+      pivots_[w] = s_.walls[w].pivot_at(wall_time());
+      moving_[w] = s_.walls[w].moves() && !s_.settling ? 1 : 0;
     }
   }
 

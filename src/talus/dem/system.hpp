@@ -28,7 +28,8 @@ struct DemSystem {
   Vec3 domain_min = Vec3::Zero(), domain_max = Vec3::Zero();  // empty box = no removal
   double skin = 0.0;
   int threads = 1;
-  int64_t removed = 0;  // particles that left the domain
+  int64_t removed = 0;    // particles that left the domain
+  bool settling = false;  // the builder settles the packing: walls stay as at t = 0
 
   // Flattened current wall primitives and the wall each belongs to.
   std::vector<geometry::Primitive> primitives;
