@@ -1,7 +1,7 @@
 #pragma once
 // Verlet neighbour list with a skin, built from a linked-cell grid. Each build
 // also re-sorts the particles by cell, so neighbours sit close in memory, and
-// carries the contact history over to the new list by particle id.
+// carries the contact history over to the new list through that permutation.
 #include <cstdint>
 #include <vector>
 
@@ -33,7 +33,7 @@ class NeighbourList {
 
   int builds = 0;
 
-  // Rebuilds the lists; permutes `p` into cell order (history follows by id).
+  // Rebuilds the lists; permutes `p` into cell order (history follows).
   void build(Particles<D>& p, const std::vector<geometry::Primitive>& prims, double skin);
 
   double skin() const { return skin_; }

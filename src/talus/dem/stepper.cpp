@@ -249,7 +249,7 @@ class Stepper final : public StepperBase<D> {
     }
     if (keep.size() == p.size()) return;
     s_.removed += static_cast<int64_t>(p.size() - keep.size());
-    // History travels by particle id; force a fresh pair table for the survivors.
+    // Renumber the lists for the survivors, so the next build can carry their history.
     auto& nl = s_.neighbours;
     std::vector<int> new_index(p.size(), -1);
     for (std::size_t k = 0; k < keep.size(); ++k) new_index[keep[k]] = static_cast<int>(k);
