@@ -1,5 +1,7 @@
 #include "talus/dem/builder.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -120,9 +122,9 @@ void check_inside(const DemScenario& sc, const DemSystem<D>& s) {
     const Vec3 x = Space<D>::to3(p.x[i]);
     for (int d = 0; d < D; ++d)
       if (x[d] < sc.run.domain_min[d] || x[d] > sc.run.domain_max[d])
-        throw InputError("[run] 'domain': particle " + std::to_string(p.id[i]) + " at (" +
-                         std::to_string(x.x()) + ", " + std::to_string(x.y()) + ", " +
-                         std::to_string(x.z()) + ") lies outside the domain");
+        throw InputError(fmt::format(
+            "[run] 'domain': particle {} at ({:.6g}, {:.6g}, {:.6g}) lies outside the domain",
+            p.id[i], x.x(), x.y(), x.z()));
   }
 }
 
@@ -191,11 +193,11 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   run->critical_time_step = run->stepper->critical_time_step(run->reference_speed);
   if (sc.run.time_step > 0.0) {
     if (sc.run.time_step > run->critical_time_step)
-      throw InputError("[run] 'time_step': " + std::to_string(sc.run.time_step) +
-                       " s is above the critical time step " +
-                       std::to_string(run->critical_time_step) +
-                       " s of the stiffest contact and lightest particle; use at most " +
-                       std::to_string(sc.run.safety_factor * run->critical_time_step) + " s");
+      throw InputError(fmt::format(
+          "[run] 'time_step': {:.4g} s is above the critical time step {:.4g} s of the stiffest "
+          "contact and lightest particle; use at most {:.4g} s (or leave it out: automatic)",
+          sc.run.time_step, run->critical_time_step,
+          sc.run.safety_factor * run->critical_time_step));
     s.dt = sc.run.time_step;
   } else {
     s.dt = sc.run.safety_factor * run->critical_time_step;

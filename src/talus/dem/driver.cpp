@@ -1,5 +1,7 @@
 #include "talus/dem/driver.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,28 +33,28 @@ template <int D>
 double available_energy(const DemSystem<D>& s) {
   const auto& p = s.particles;
   const double g = s.gravity.norm();
-  double floor = std::numeric_limits<double>::max(), ke = 0.0, m = 0.0, dmean = 0.0;
+  double m = 0.0, dmean = 0.0, pe = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    m += p.m[i];
+    dmean += 2.0 * p.r[i];
+  }
+  dmean /= std::max<std::size_t>(1, p.size());
   if (g > 0.0) {
-    const auto down = (s.gravity / g).eval();
-    for (std::size_t i = 0; i < p.size(); ++i) floor = std::min(floor, -down.dot(p.x[i]) - p.r[i]);
+    // Heights along -gravity; wall bounds that are infinite along it are skipped.
+    const auto up = (-s.gravity / g).eval();
+    double floor = std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < p.size(); ++i) floor = std::min(floor, up.dot(p.x[i]) - p.r[i]);
     for (const auto& w : s.walls) {
       Vec3 lo, hi;
       w.bounds(lo, hi);
       for (const Vec3& c : {lo, hi}) {
-        const double h = -down.dot(Space<D>::from3(c));
+        const double h = up.dot(Space<D>::from3(c));
         if (std::isfinite(h)) floor = std::min(floor, h);
       }
     }
+    for (std::size_t i = 0; i < p.size(); ++i) pe += p.m[i] * g * (up.dot(p.x[i]) - floor);
   }
-  double pe = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    ke +=
-        0.5 * p.m[i] * p.v[i].squaredNorm() + 0.5 / p.inv_I[i] * Space<D>::rot_dot(p.w[i], p.w[i]);
-    m += p.m[i];
-    dmean += 2.0 * p.r[i];
-    if (g > 0.0) pe += p.m[i] * (-(s.gravity / g).dot(p.x[i]) - floor) * g;
-  }
-  dmean /= std::max<std::size_t>(1, p.size());
+  const double ke = kinetic_energy(p) + rotational_energy(p);
   // Never below the energy of the whole mass moving at 1 m/s or lifted by one diameter.
   return std::max({ke + pe, 0.5 * m, m * g * dmean});
 }
@@ -64,20 +66,20 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
   if (!std::isfinite(ke)) {
     for (std::size_t i = 0; i < s.particles.size(); ++i)
       if (!s.particles.v[i].allFinite())
-        throw RunError("t = " + std::to_string(s.time) + " s: particle " +
-                       std::to_string(s.particles.id[i]) +
-                       " has a non-finite velocity. Check the time step (critical " +
-                       std::to_string(run.critical_time_step) + " s) and the material constants");
-    throw RunError("t = " + std::to_string(s.time) + " s: kinetic energy is not finite");
+        throw RunError(fmt::format(
+            "t = {:.6g} s: particle {} has a non-finite velocity. Check the time step (now {:.4g} "
+            "s, critical {:.4g} s) and the material constants",
+            s.time, s.particles.id[i], s.dt, run.critical_time_step));
+    throw RunError(fmt::format("t = {:.6g} s: kinetic energy is not finite", s.time));
   }
   bool walls_move = false;
   for (const auto& w : s.walls) walls_move = walls_move || w.moves();
   if (factor > 0.0 && !walls_move && ke > factor * e_avail)
-    throw RunError("t = " + std::to_string(s.time) + " s: kinetic energy " + std::to_string(ke) +
-                   " J exceeds " + std::to_string(factor) +
-                   " times the energy available at the start (" + std::to_string(e_avail) +
-                   " J): the run is unstable. Reduce the time step (now " + std::to_string(s.dt) +
-                   " s, critical " + std::to_string(run.critical_time_step) + " s)");
+    throw RunError(fmt::format(
+        "t = {:.6g} s: kinetic energy {:.4g} J exceeds {} times the energy available at the "
+        "start ({:.4g} J): the run is unstable. Reduce the time step (now {:.4g} s, critical "
+        "{:.4g} s)",
+        s.time, ke, factor, e_avail, s.dt, run.critical_time_step));
 }
 
 int64_t next_multiple(int64_t step, int64_t every) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 
 #include "talus/dem/contact/hertz_mindlin.hpp"
 #include "talus/dem/contact/linear.hpp"
@@ -15,12 +16,11 @@ namespace talus::dem {
 
 namespace {
 
-// Forces of one particle pair, kept per pair when threads gather them.
+// Force on i (j gets the opposite) and the torques on i and j of one pair.
 template <int D>
 struct PairResult {
   typename Space<D>::Vec f;
   typename Space<D>::Rot ti, tj;
-  bool touching;
 };
 
 template <int D, class Model>
@@ -38,8 +38,6 @@ class Stepper final : public StepperBase<D> {
         coeffs_[a * m + b] = Model::make(s.contact, s.materials[a], s.materials[b]);
     kuen_ = KuenRolling(s.contact, s.gravity.norm());
   }
-
-  const char* model_name() const override { return "dem"; }
 
   void prime() override {
     update_walls(true);
@@ -114,7 +112,8 @@ class Stepper final : public StepperBase<D> {
     for (int i = 0; i < n; ++i) {
       p.x[i] += dt * p.v[i];
       const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
-      moved = d2 <= moved ? moved : d2;  // also takes NaN, which forces a rebuild
+      // A NaN position counts as infinitely far: the rebuild then stops the run.
+      moved = std::isnan(d2) ? std::numeric_limits<double>::infinity() : std::max(moved, d2);
     }
 #pragma omp critical(talus_moved)
     max_moved_ = moved <= max_moved_ ? max_moved_ : moved;
@@ -450,8 +449,8 @@ class Stepper final : public StepperBase<D> {
     buffers_built_ = s_.neighbours.builds;
   }
 
-  // Per-thread sums of wall force and torque, reduced in thread order.
-
+  // Per-thread sums of wall force and torque, zeroed every step and reduced in
+  // thread order (one spare element keeps data() valid without walls).
   void prepare_wall_accumulators() {
     const int nw = static_cast<int>(s_.walls.size());
     const int nt = std::max(1, s_.threads);
@@ -475,7 +474,6 @@ class Stepper final : public StepperBase<D> {
         s_.walls[w].torque += wall_acc_[(static_cast<std::size_t>(t) * nw + w) * 2 + 1];
       }
     }
-    std::fill(wall_acc_.begin(), wall_acc_.end(), Vec3::Zero());
   }
 
   void wall_forces() {
@@ -535,8 +533,8 @@ class Stepper final : public StepperBase<D> {
   std::vector<Vec3> wall_acc_, pivots_;
   std::vector<char> moving_, active_;
   int64_t pair_touching_ = 0, wall_touching_ = 0;
-  double max_moved_ = 0.0;
-  std::exception_ptr error_;  // squared, largest displacement since the last build
+  double max_moved_ = 0.0;    // squared, largest displacement since the last build
+  std::exception_ptr error_;  // raised inside the parallel region, rethrown outside
   KuenRolling kuen_;
 };
 

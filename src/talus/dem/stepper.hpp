@@ -24,7 +24,6 @@ class StepperBase {
   // at v_ref (Hertz laws); PFC's sqrt(m/k) for linear contacts; divided by
   // sqrt(2D) for the 2D contacts a particle has in a dense packing.
   virtual double critical_time_step(double v_ref) const = 0;
-  virtual const char* model_name() const = 0;
 };
 
 template <int D>

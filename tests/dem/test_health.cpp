@@ -1,0 +1,27 @@
+// A run that goes unstable stops with a diagnosis instead of writing garbage.
+#include <gtest/gtest.h>
+
+#include "peer_case.hpp"
+#include "talus/core/error.hpp"
+#include "talus/dem/builder.hpp"
+#include "talus/dem/driver.hpp"
+
+using namespace talus;
+using namespace talus::dem;
+
+// The builder refuses such a step; forcing one past it (8x the critical step
+// of the peer column) makes the contacts blow up, and the driver must notice.
+TEST(Health, UnstableTimeStepStopsTheRunWithADiagnosis) {
+  auto run = build_dem<3>(cases::peer_column(6, 4, 12), {});
+  run->system.dt = 8.0 * run->critical_time_step;
+  RunControl c;
+  c.duration = 4000 * run->system.dt;
+  try {
+    run_dem<3>(*run, c, {}, true);
+    FAIL() << "the unstable run was not stopped";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("time step"), std::string::npos) << what;
+    std::printf("[health] %s\n", what.c_str());
+  }
+}
