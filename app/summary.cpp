@@ -1,7 +1,6 @@
 #include "summary.hpp"
 
 #include <fstream>
-#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "talus/core/version.hpp"
