@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "summary.hpp"
+#include "talus/analysis/flume_observer.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
 #include "talus/dem/builder.hpp"
@@ -71,10 +72,28 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   RunSummary summary;
   summary.output = out;
   summary.setup_seconds = setup_s;
+  std::vector<dem::DemObserver<D>*> observers = {&outputs};
+  std::unique_ptr<analysis::FlumeObserver> flume;
+  if constexpr (D == 2) {
+    if (sc.flume) {
+      const auto& f = *sc.flume;
+      const auto geometry =
+          geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+      flume = std::make_unique<analysis::FlumeObserver>(out, geometry, f, run->system, resume,
+                                                        run->system.time);
+      outputs.decorate = [&flume](const dem::DemSystem<2>& s, io::ParticleFrame& frame) {
+        flume->add_layers(s, frame);
+      };
+      observers.push_back(flume.get());
+    }
+  }
   try {
-    const auto stats = dem::run_dem<D>(*run, control, {&outputs}, !resume);
+    const auto stats = dem::run_dem<D>(*run, control, observers, !resume);
     summary.steps = stats.steps;
     summary.loop_seconds = stats.wall_seconds;
+    if constexpr (D == 2) {
+      if (flume) summary.flume = flume->finish(*run);
+    }
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());

@@ -2,6 +2,7 @@
 // summary.json: what ran, with which resolved parameters, how long it took and
 // the headline results.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "talus/dem/builder.hpp"
@@ -13,6 +14,7 @@ struct RunSummary {
   std::filesystem::path output;
   int64_t steps = 0;
   double loop_seconds = 0.0, setup_seconds = 0.0;
+  nlohmann::json flume;  // the flume analysis, when the scenario has [flume]
 };
 
 template <int D>

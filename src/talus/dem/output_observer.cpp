@@ -175,6 +175,7 @@ void DemOutputs<D>::on_snapshot(const DemRun<D>& run) {
   f.radius = p.r;
   f.id = p.id;
   f.material = p.material;
+  if (decorate) decorate(s, f);
   particles_->add(s.time, f);
   double extent = 1.0;
   if (s.has_domain()) extent = (s.domain_max - s.domain_min).maxCoeff();

@@ -28,6 +28,8 @@ class DemOutputs final : public DemObserver<D> {
   void on_progress(double time, double end, double steps_per_s) override;
 
   std::function<void(double, double, double)> progress;  // set by the app
+  // Adds fields of an analysis (e.g. the flume's initial layer) to each particle snapshot.
+  std::function<void(const DemSystem<D>&, io::ParticleFrame&)> decorate;
 
   // Peaks seen in the series, for the summary.
   std::vector<double> peak_wall_force;  // |F| per wall

@@ -25,7 +25,8 @@ using detail::required_number_in;
 
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}};
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method", "name", "description", "run", "contact", "materials", "walls", "particles", "output"};
+    "method",    "name",  "description", "run",       "contact",
+    "materials", "flume", "walls",       "particles", "output"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;
@@ -174,20 +175,26 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   s.contact.pairs = detail::read_pairs(contact, ctx);
   contact.finish();
 
+  if (auto flume = root.optional_table("flume")) detail::read_flume(*flume, s, ctx);
+  const std::size_t generated_walls = s.walls.size();
   std::vector<TomlReader> walls = root.tables("walls");
   for (std::size_t i = 0; i < walls.size(); ++i) {
-    s.walls.push_back(detail::read_wall(walls[i], i, ctx));
-    for (std::size_t j = 0; j < i; ++j) {
-      if (s.walls[j].name == s.walls[i].name) {
-        walls[i].fail("name", fmt::format("wall name '{}' is used twice (first at line {})",
-                                          s.walls[i].name, walls[j].line()));
-      }
+    auto wall = detail::read_wall(walls[i], i, ctx);
+    for (std::size_t j = 0; j < s.walls.size(); ++j) {
+      if (s.walls[j].name != wall.name) continue;
+      const std::string first = j < generated_walls
+                                    ? "[flume]"
+                                    : fmt::format("line {}", walls[j - generated_walls].line());
+      walls[i].fail("name",
+                    fmt::format("wall name '{}' is used twice (first by {})", wall.name, first));
     }
+    s.walls.push_back(std::move(wall));
   }
 
   std::vector<TomlReader> sources = root.tables("particles");
-  if (sources.empty())
-    root.fail("particles", "missing: at least one [[particles]] table is needed");
+  if (sources.empty() && s.sources.empty())
+    root.fail("particles",
+              "missing: at least one [[particles]] table (or a [flume.release]) is needed");
   for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
   check_densities(s, material_readers);
 

@@ -94,6 +94,13 @@ std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers
 std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext& ctx);
 dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ctx);
 dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx);
+// Pieces of [[particles]] that [flume.release] shares.
+void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s);
+std::optional<int> read_count(TomlReader& r);
+dem::SettleParams read_settle(TomlReader& r);
+// [flume]: fills s.flume, appends the generated walls (and the release fill
+// when [flume.release] is given) to s.walls and s.sources.
+void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);
 
 // TOML text for a JSON object of tables, arrays of tables and values, keys in
 // the object's order. Small tables of plain values become inline tables.

@@ -59,39 +59,6 @@ void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& 
   }
 }
 
-void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s) {
-  s.radius_min = required_number_in(r, "radius_min", positive());
-  s.radius_max = required_number_in(r, "radius_max", positive());
-  if (s.radius_min > s.radius_max) {
-    r.fail("radius_min", fmt::format("radius_min = {} is larger than radius_max = {}",
-                                     r.text("radius_min"), r.text("radius_max")));
-  }
-}
-
-std::optional<int> read_count(TomlReader& r) {
-  const auto count = r.optional_integer("count");
-  if (count) r.expect(*count > 0 && *count <= INT_MAX, "count", "a positive integer");
-  return count ? std::optional<int>(static_cast<int>(*count)) : std::nullopt;
-}
-
-dem::SettleParams read_settle(TomlReader& r) {
-  dem::SettleParams settle;
-  if (!r.has("settle")) return settle;
-  if (r.table().get("settle")->is_boolean()) {
-    settle.enabled = r.boolean("settle", false);
-    return settle;
-  }
-  if (!r.table().get("settle")->is_table()) {
-    r.expect(false, "settle", "true, false or a table {ke_ratio = .., max_time = ..}");
-  }
-  TomlReader t = *r.optional_table("settle");
-  settle.enabled = true;
-  settle.ke_ratio = number_in(t, "ke_ratio", settle.ke_ratio, positive());
-  settle.max_time = number_in(t, "max_time", settle.max_time, positive());
-  t.finish();
-  return settle;
-}
-
 void read_kind(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ctx) {
   switch (s.kind) {
     case SourceKind::List: {
@@ -136,6 +103,39 @@ void read_kind(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ct
 }
 
 }  // namespace
+
+void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s) {
+  s.radius_min = required_number_in(r, "radius_min", positive());
+  s.radius_max = required_number_in(r, "radius_max", positive());
+  if (s.radius_min > s.radius_max) {
+    r.fail("radius_min", fmt::format("radius_min = {} is larger than radius_max = {}",
+                                     r.text("radius_min"), r.text("radius_max")));
+  }
+}
+
+std::optional<int> read_count(TomlReader& r) {
+  const auto count = r.optional_integer("count");
+  if (count) r.expect(*count > 0 && *count <= INT_MAX, "count", "a positive integer");
+  return count ? std::optional<int>(static_cast<int>(*count)) : std::nullopt;
+}
+
+dem::SettleParams read_settle(TomlReader& r) {
+  dem::SettleParams settle;
+  if (!r.has("settle")) return settle;
+  if (r.table().get("settle")->is_boolean()) {
+    settle.enabled = r.boolean("settle", false);
+    return settle;
+  }
+  if (!r.table().get("settle")->is_table()) {
+    r.expect(false, "settle", "true, false or a table {ke_ratio = .., max_time = ..}");
+  }
+  TomlReader t = *r.optional_table("settle");
+  settle.enabled = true;
+  settle.ke_ratio = number_in(t, "ke_ratio", settle.ke_ratio, positive());
+  settle.max_time = number_in(t, "max_time", settle.max_time, positive());
+  t.finish();
+  return settle;
+}
 
 dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx) {
   dem::ParticleSourceParams s;

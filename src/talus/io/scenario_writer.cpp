@@ -204,6 +204,36 @@ class Writer {
     return t;
   }
 
+  // [flume] with its generated fill as [flume.release].
+  static Json flume(const dem::FlumeParams& f, const dem::DemScenario& s) {
+    Json t{{"beta", degrees(f.beta)},
+           {"arc_radius", f.arc_radius},
+           {"l_star", *f.l_star},
+           {"barrier_length", *f.barrier_length},
+           {"wall_material", f.wall_material},
+           {"gate", f.lift_gate ? "lift" : "remove"},
+           {"gate_speed", f.gate_speed},
+           {"gate_open", f.gate_open},
+           {"layers", f.layers},
+           {"front_quantile", f.front_quantile},
+           {"profile_bin", f.profile_bin},
+           {"tail_thickness", f.tail_thickness}};
+    for (const auto& src : s.sources) {
+      if (!src.from_flume) continue;
+      Json r{{"material", src.material},
+             {"radius_min", src.radius_min},
+             {"radius_max", src.radius_max},
+             {"porosity", src.porosity},
+             {"shrink", src.shrink}};
+      if (src.count) r["count"] = *src.count;
+      r["settle"] = src.settle.enabled
+                        ? Json{{"ke_ratio", src.settle.ke_ratio}, {"max_time", src.settle.max_time}}
+                        : Json(false);
+      t["release"] = std::move(r);
+    }
+    return t;
+  }
+
   static Json output(const dem::OutputParams& o) {
     return Json{{"snapshot_interval", o.snapshot_interval},
                 {"series_interval", o.series_interval},
@@ -222,11 +252,17 @@ Json scenario_table(const dem::DemScenario& s) {
   doc["contact"] = Writer::contact(s.contact);
   Json materials = Json::array(), walls = Json::array(), sources = Json::array();
   for (const auto& m : s.materials) materials.push_back(Writer::material(m));
-  for (const auto& wall : s.walls) walls.push_back(w.wall(wall));
-  for (const auto& source : s.sources) sources.push_back(w.source(source));
+  // What [flume] generates is written as [flume], not as walls and particles.
+  for (const auto& wall : s.walls) {
+    if (!wall.from_flume) walls.push_back(w.wall(wall));
+  }
+  for (const auto& source : s.sources) {
+    if (!source.from_flume) sources.push_back(w.source(source));
+  }
   doc["materials"] = std::move(materials);
+  if (s.flume) doc["flume"] = Writer::flume(*s.flume, s);
   if (!walls.empty()) doc["walls"] = std::move(walls);
-  doc["particles"] = std::move(sources);
+  if (!sources.empty()) doc["particles"] = std::move(sources);
   doc["output"] = Writer::output(s.output);
   return doc;
 }

@@ -1,0 +1,106 @@
+// [flume]: the Mancarella & Hungr flume from the barrier angle and arc radius
+// (spec: flume.md). It generates the walls and, with [flume.release], the fill
+// behind the gate, so a flume scenario never types wall coordinates.
+#include <fmt/format.h>
+
+#include "talus/core/error.hpp"
+#include "talus/geometry/flume.hpp"
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io::detail {
+namespace {
+
+const EnumNames<int> kGateModes = {{"remove", 0}, {"lift", 1}};
+
+// Kuen's calibrated fill (flume.md): radius uniform 1-2 mm, 3 % shrink, and the
+// 2D porosity that gives his 9099 disks in the release triangle.
+constexpr double kReleaseRadiusMin = 1e-3, kReleaseRadiusMax = 2e-3;
+constexpr double kReleasePorosity = 0.1662, kReleaseShrink = 0.03;
+
+dem::ParticleSourceParams read_release(TomlReader& r, const geometry::FlumeGeometry& g,
+                                       const DemContext& ctx) {
+  dem::ParticleSourceParams s;
+  s.kind = dem::SourceKind::RandomFill;
+  s.from_flume = true;
+  s.material = r.required_string("material");
+  check_material(r, "material", s.material, ctx);
+  for (const auto& p : g.release) s.polygon.push_back(Space<2>::to3(p));
+  s.box_min = s.box_max = s.polygon.front();
+  for (const Vec3& p : s.polygon) {
+    s.box_min = s.box_min.cwiseMin(p);
+    s.box_max = s.box_max.cwiseMax(p);
+  }
+  s.radius_min = number_in(r, "radius_min", kReleaseRadiusMin, positive());
+  s.radius_max = number_in(r, "radius_max", kReleaseRadiusMax, positive());
+  if (s.radius_min > s.radius_max) {
+    r.fail("radius_min", fmt::format("radius_min = {} is larger than radius_max = {}", s.radius_min,
+                                     s.radius_max));
+  }
+  s.porosity = number_in(r, "porosity", kReleasePorosity, between(0.0, 1.0, true, true));
+  s.count = read_count(r);
+  s.shrink = number_in(r, "shrink", kReleaseShrink, between(0.0, 1.0, false, true));
+  if (r.has("settle")) {
+    s.settle = read_settle(r);
+  } else {
+    s.settle.enabled = true;
+    s.settle.ke_ratio = 1e-4;
+    s.settle.max_time = 1.0;
+  }
+  r.finish();
+  return s;
+}
+
+}  // namespace
+
+void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
+  if (ctx.dimension != 2) r.fail("flume", "the flume is a 2D scenario: set run.dimension = 2");
+  dem::FlumeParams f;
+  f.beta = r.required_angle("beta");
+  f.arc_radius = required_number_in(r, "arc_radius", positive());
+  f.l_star = optional_number_in(r, "l_star", positive());
+  f.barrier_length = optional_number_in(r, "barrier_length", positive());
+  f.wall_material = r.required_string("wall_material");
+  check_material(r, "wall_material", f.wall_material, ctx);
+  f.lift_gate = r.enumeration("gate", kGateModes, 0) == 1;
+  f.gate_speed = number_in(r, "gate_speed", f.gate_speed, positive());
+  f.gate_open = number_in(r, "gate_open", f.gate_open, non_negative());
+  const auto layers = r.integer("layers", f.layers);
+  r.expect(layers >= 1 && layers <= 100, "layers", "an integer from 1 to 100");
+  f.layers = static_cast<int>(layers);
+  f.front_quantile =
+      number_in(r, "front_quantile", f.front_quantile, between(0.5, 1.0, true, false));
+  f.profile_bin = number_in(r, "profile_bin", f.profile_bin, positive());
+  f.tail_thickness = number_in(r, "tail_thickness", f.tail_thickness, non_negative());
+
+  geometry::FlumeGeometry g;
+  try {
+    g = geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+  } catch (const InputError& e) {
+    r.fail("beta", e.what());
+  }
+  f.l_star = g.l_star;
+  f.barrier_length = g.barrier_length;
+
+  auto walls = g.walls(f.wall_material);
+  // The lid only holds the fill in place while it settles.
+  walls.lid.motion.remove_at = f.gate_open;
+  if (f.lift_gate) {
+    const double height = (g.gate_top - g.gate_bottom).norm();
+    walls.gate.motion.velocity = Vec3(0.0, f.gate_speed, 0.0);
+    walls.gate.motion.move_start = f.gate_open;
+    // Once its foot has passed the lid level the gate touches nothing.
+    walls.gate.motion.remove_at = f.gate_open + height / f.gate_speed;
+  } else {
+    walls.gate.motion.remove_at = f.gate_open;
+  }
+  for (dem::WallParams* w : {&walls.chute, &walls.arc, &walls.barrier, &walls.gate, &walls.lid}) {
+    w->from_flume = true;
+    s.walls.push_back(*w);
+  }
+  if (auto release = r.optional_table("release"))
+    s.sources.push_back(read_release(*release, g, ctx));
+  r.finish();
+  s.flume = f;
+}
+
+}  // namespace talus::io::detail
