@@ -347,7 +347,8 @@ TEST_P(RoundTrip, WrittenTomlParsesBackToTheSameValues) {
   expect_same(original, again);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenario, RoundTrip, testing::Values("full_2d.toml", "full_3d.toml"));
+INSTANTIATE_TEST_SUITE_P(Scenario, RoundTrip, testing::Values("full_2d.toml", "full_3d.toml",
+                                                                  "flume_2d.toml"));
 
 TEST(Scenario, JsonHasTheResolvedValuesWithAnglesInDegrees) {
   const nlohmann::json j2 = scenario_to_json(parse_file("full_2d.toml"));

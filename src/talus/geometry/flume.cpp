@@ -57,9 +57,11 @@ double interpolate(double beta_deg, Field field) {
 }
 
 Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
-const double kChute = deg2rad(kFlumeChuteAngleDeg);
-const Vec2 kChuteDir = direction(-kChute);
-const double kGateS = kFlumeGateX / std::cos(kChute);  // chute top to gate foot
+// Functions, not namespace-scope constants: a FlumeGeometry built during
+// another file's static initialisation must not see them still zero.
+constexpr double kChute = kFlumeChuteAngleDeg * M_PI / 180.0;
+Vec2 chute_dir() { return direction(-kChute); }
+double gate_s() { return kFlumeGateX / std::cos(kChute); }  // chute top to gate foot
 
 Primitive segment(const Vec2& a, const Vec2& b) {
   Primitive p;
@@ -94,11 +96,11 @@ FlumeGeometry make_flume(double beta_deg, double arc_radius, std::optional<doubl
   f.barrier_length = barrier_length.value_or(flume_barrier_length(beta_deg, arc_radius));
   // Tangent length: from the corner to where the arc meets each straight line.
   const double tangent = arc_radius * std::tan((kChute + f.beta) / 2);
-  if (!(f.l_star - tangent > kGateS))
+  if (!(f.l_star - tangent > gate_s()))
     throw InputError(fmt::format(
         "flume.l_star = {} m with flume.arc_radius = {} m: the arc would start above the gate "
         "(chute must be longer than {:.4f} m)",
-        f.l_star, arc_radius, kGateS + tangent));
+        f.l_star, arc_radius, gate_s() + tangent));
   if (!(f.barrier_length > tangent))
     throw InputError(
         fmt::format("flume.barrier_length = {} m: shorter than the arc's tangent length {:.4f} m",
@@ -106,14 +108,14 @@ FlumeGeometry make_flume(double beta_deg, double arc_radius, std::optional<doubl
 
   const Vec2 barrier_dir = direction(f.beta);
   f.chute_start = Vec2(0, kFlumeChuteTopY);
-  f.corner = f.chute_start + f.l_star * kChuteDir;
-  f.chute_end = f.corner - tangent * kChuteDir;
+  f.corner = f.chute_start + f.l_star * chute_dir();
+  f.chute_end = f.corner - tangent * chute_dir();
   f.arc_centre = f.chute_end + arc_radius * Vec2(std::sin(kChute), std::cos(kChute));
   f.arc_angle_start = deg2rad(270.0) - kChute;
   f.arc_angle_end = deg2rad(270.0) + f.beta;
   f.barrier_start = f.corner + tangent * barrier_dir;
   f.barrier_end = f.corner + f.barrier_length * barrier_dir;
-  f.gate_bottom = f.chute_start + kGateS * kChuteDir;
+  f.gate_bottom = f.chute_start + gate_s() * chute_dir();
   f.gate_top = Vec2(kFlumeGateX, kFlumeChuteTopY);
   f.lid_end = f.chute_start;
   f.release[0] = f.chute_start;
@@ -127,8 +129,8 @@ double FlumeGeometry::release_area() const {
   return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
 }
 
-double FlumeGeometry::chute_start_s() const { return -kGateS; }
-double FlumeGeometry::chute_end_s() const { return (chute_end - chute_start).norm() - kGateS; }
+double FlumeGeometry::chute_start_s() const { return -gate_s(); }
+double FlumeGeometry::chute_end_s() const { return (chute_end - chute_start).norm() - gate_s(); }
 double FlumeGeometry::arc_end_s() const {
   return chute_end_s() + radius * (arc_angle_end - arc_angle_start);
 }
@@ -137,13 +139,13 @@ double FlumeGeometry::path_end_s() const {
 }
 
 Vec2 FlumeGeometry::point_at(double s) const {
-  if (s <= chute_end_s()) return gate_bottom + s * kChuteDir;
+  if (s <= chute_end_s()) return gate_bottom + s * chute_dir();
   if (s >= arc_end_s()) return barrier_start + (s - arc_end_s()) * direction(beta);
   return arc_centre + radius * direction(arc_angle_start + (s - chute_end_s()) / radius);
 }
 
 Vec2 FlumeGeometry::tangent_at(double s) const {
-  if (s <= chute_end_s()) return kChuteDir;
+  if (s <= chute_end_s()) return chute_dir();
   if (s >= arc_end_s()) return direction(beta);
   // Counter-clockwise along the arc: the radial direction turned by +90 deg.
   const Vec2 radial = direction(arc_angle_start + (s - chute_end_s()) / radius);
@@ -163,7 +165,7 @@ double FlumeGeometry::path_coordinate(const Vec2& x) const {
   closest_point<2>(arc, x, kInf, arc_hit);
   closest_point<2>(segment(barrier_start, barrier_end), x, kInf, barrier_hit);
   if (chute_hit.distance <= arc_hit.distance && chute_hit.distance <= barrier_hit.distance)
-    return (chute_hit.point - chute_start).dot(kChuteDir) - kGateS;
+    return (chute_hit.point - chute_start).dot(chute_dir()) - gate_s();
   if (barrier_hit.distance < arc_hit.distance)
     return arc_end_s() + (barrier_hit.point - barrier_start).norm();
   const Vec2 rel = arc_hit.point - arc_centre;
