@@ -109,17 +109,66 @@ TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::ta
   return TomlReader(empty, root.file(), std::string(key), std::string(key));
 }
 
-}  // namespace
-
-ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
-                                const std::vector<std::string>& overrides) {
-  ScenarioFile file{path, "", {}};
+toml::table parse_toml(std::string_view text, const std::string& path) {
   try {
-    file.table = toml::parse(text, path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
                                  e.source().begin.column, e.description()));
   }
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open the scenario file", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Tables merge key by key; any other value, arrays of tables included,
+// replaces the base's.
+void merge_over(toml::table& base, const toml::table& top) {
+  for (const auto& [key, node] : top) {
+    toml::node* below = base.get(key);
+    if (below && below->is_table() && node.is_table()) {
+      merge_over(*below->as_table(), *node.as_table());
+    } else {
+      base.insert_or_assign(key, node);
+    }
+  }
+}
+
+// extends = "base.toml": this file's values over the base scenario's
+// (relative to this file's folder; bases may extend further bases).
+void resolve_extends(toml::table& table, const std::string& path, int depth) {
+  const toml::node* extends = table.get("extends");
+  if (!extends) return;
+  const int line = static_cast<int>(extends->source().begin.line);
+  if (!extends->is_string())
+    throw InputError(
+        fmt::format("{}:{}: 'extends': expected the path of a base scenario file", path, line));
+  if (depth >= 8)
+    throw InputError(fmt::format(
+        "{}:{}: 'extends': more than 8 levels of base scenarios (a cycle?)", path, line));
+  std::filesystem::path base_path = *extends->value<std::string>();
+  if (base_path.is_relative()) base_path = std::filesystem::path(path).parent_path() / base_path;
+  if (!std::filesystem::exists(base_path))
+    throw InputError(fmt::format("{}:{}: 'extends': base scenario {} does not exist", path, line,
+                                 base_path.string()));
+  toml::table base = parse_toml(read_text(base_path.string()), base_path.string());
+  resolve_extends(base, base_path.string(), depth + 1);
+  table.erase("extends");
+  merge_over(base, table);
+  table = std::move(base);
+}
+
+}  // namespace
+
+ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
+                                const std::vector<std::string>& overrides) {
+  ScenarioFile file{path, "", parse_toml(text, path)};
+  resolve_extends(file.table, path, 0);
   try {
     apply_overrides(file.table, overrides);
   } catch (const InputError& e) {
@@ -137,11 +186,7 @@ ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
 
 ScenarioFile load_scenario_file(const std::string& path,
                                 const std::vector<std::string>& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open the scenario file", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_scenario_text(text.str(), path, overrides);
+  return load_scenario_text(read_text(path), path, overrides);
 }
 
 dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {

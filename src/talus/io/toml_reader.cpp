@@ -128,12 +128,19 @@ bool TomlReader::is_string(std::string_view key) const {
   return node && node->is_string();
 }
 
+// A value read from a base scenario (extends = ...) names the base file.
+std::string TomlReader::file_of(const toml::node* node) const {
+  if (node && node->source().path && !node->source().path->empty()) return *node->source().path;
+  return file_;
+}
+
 std::string TomlReader::where(std::string_view key) const {
   const toml::node* node = table_->get(key);
+  const std::string file = file_of(node ? node : table_);
   const std::string dotted = path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
   if (node && node->source().begin.line == 0) return fmt::format("{}: --set {}", file_, dotted);
   const int at = node ? static_cast<int>(node->source().begin.line) : line();
-  const std::string head = at > 0 ? fmt::format("{}:{}:", file_, at) : file_ + ":";
+  const std::string head = at > 0 ? fmt::format("{}:{}:", file, at) : file + ":";
   const std::string section = label();
   return fmt::format("{} {}'{}'", head, section.empty() ? "" : section + " ", key);
 }

@@ -89,6 +89,7 @@ class TomlReader {
 
   // "file:line: [section] 'key'" for messages; the line of the key when
   // present, else of the table.
+  std::string file_of(const toml::node* node) const;
   std::string where(std::string_view key) const;
   // The value as written in the file ("-3", "\"abc\"", "[1, 2]").
   std::string text(std::string_view key) const;
