@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "summary.hpp"
+#include "talus/analysis/dam_break.hpp"
 #include "talus/analysis/flume_observer.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
@@ -92,7 +93,11 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
     summary.steps = stats.steps;
     summary.loop_seconds = stats.wall_seconds;
     if constexpr (D == 2) {
-      if (flume) summary.flume = flume->finish(*run);
+      if (flume) summary.analysis["flume"] = flume->finish(*run);
+      if (sc.dam_break) {
+        const analysis::Grains grains{run->system.particles.x, run->system.particles.r};
+        summary.analysis["dam_break"] = analysis::report_dam_break(grains, *sc.dam_break, out);
+      }
     }
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {

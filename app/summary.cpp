@@ -56,7 +56,7 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
         {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
         {"walls", walls}}},
   };
-  if (!summary.flume.is_null()) j["flume"] = summary.flume;
+  for (const auto& [name, value] : summary.analysis.items()) j[name] = value;
   if (!error.empty()) j["error"] = error;
   const auto path = summary.output / "summary.json";
   const auto tmp = summary.output / "summary.json.tmp";

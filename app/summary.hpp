@@ -14,7 +14,8 @@ struct RunSummary {
   std::filesystem::path output;
   int64_t steps = 0;
   double loop_seconds = 0.0, setup_seconds = 0.0;
-  nlohmann::json flume;  // the flume analysis, when the scenario has [flume]
+  // Method-specific analyses by name ("flume", "dam_break"), each a top-level key.
+  nlohmann::json analysis = nlohmann::json::object();
 };
 
 template <int D>

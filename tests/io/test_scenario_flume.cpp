@@ -47,7 +47,7 @@ TEST(ScenarioFlume, GeometryBWallsMatchTable2AndTheGateIsLifted) {
   // The release fill: the triangle of area 0.07714 m^2 (flume.md) with Kuen's defaults.
   ASSERT_EQ(s.sources.size(), 1u);
   const auto& fill = s.sources[0];
-  EXPECT_TRUE(fill.from_flume);
+  EXPECT_TRUE(fill.generated);
   EXPECT_EQ(fill.kind, dem::SourceKind::RandomFill);
   ASSERT_EQ(fill.polygon.size(), 3u);
   const Vec3 a = fill.polygon[1] - fill.polygon[0], b = fill.polygon[2] - fill.polygon[0];

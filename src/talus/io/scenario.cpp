@@ -25,8 +25,8 @@ using detail::required_number_in;
 
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}};
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method",    "name",  "description", "run",       "contact",
-    "materials", "flume", "walls",       "particles", "output"};
+    "method", "name",      "description", "run",       "contact", "materials",
+    "flume",  "dam_break", "walls",       "particles", "output"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;
@@ -221,6 +221,10 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   contact.finish();
 
   if (auto flume = root.optional_table("flume")) detail::read_flume(*flume, s, ctx);
+  if (auto dam = root.optional_table("dam_break")) {
+    if (s.flume) dam->fail("dam_break", "a scenario has either [flume] or [dam_break], not both");
+    detail::read_dam_break(*dam, s, ctx);
+  }
   const std::size_t generated_walls = s.walls.size();
   std::vector<TomlReader> walls = root.tables("walls");
   for (std::size_t i = 0; i < walls.size(); ++i) {
@@ -239,7 +243,8 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   std::vector<TomlReader> sources = root.tables("particles");
   if (sources.empty() && s.sources.empty())
     root.fail("particles",
-              "missing: at least one [[particles]] table (or a [flume.release]) is needed");
+              "missing: at least one [[particles]] table (or a [flume.release] or "
+              "[dam_break.release]) is needed");
   for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
   check_densities(s, material_readers);
 

@@ -101,6 +101,12 @@ dem::SettleParams read_settle(TomlReader& r);
 // [flume]: fills s.flume, appends the generated walls (and the release fill
 // when [flume.release] is given) to s.walls and s.sources.
 void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);
+// [flume.release] / [dam_break.release]: a settled random fill of `polygon`
+// (counter-clockwise) with Kuen's defaults.
+dem::ParticleSourceParams read_release(TomlReader& r, const std::vector<Vec3>& polygon,
+                                       const DemContext& ctx);
+// [dam_break]: fills s.dam_break, appends its walls and release fill.
+void read_dam_break(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);
 
 // TOML text for a JSON object of tables, arrays of tables and values, keys in
 // the object's order. Small tables of plain values become inline tables.

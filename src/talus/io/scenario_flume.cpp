@@ -12,19 +12,21 @@ namespace {
 
 const EnumNames<int> kGateModes = {{"remove", 0}, {"lift", 1}};
 
-// Kuen's calibrated fill (flume.md): radius uniform 1-2 mm, 3 % shrink, and the
-// 2D porosity that gives his 9099 disks in the release triangle.
+// Kuen's calibrated fill (flume.md): radius uniform 1-2 mm, 3 % shrink, and a
+// 2D porosity that gives about his 9099 disks in the release triangle.
 constexpr double kReleaseRadiusMin = 1e-3, kReleaseRadiusMax = 2e-3;
 constexpr double kReleasePorosity = 0.1662, kReleaseShrink = 0.03;
 
-dem::ParticleSourceParams read_release(TomlReader& r, const geometry::FlumeGeometry& g,
+}  // namespace
+
+dem::ParticleSourceParams read_release(TomlReader& r, const std::vector<Vec3>& polygon,
                                        const DemContext& ctx) {
   dem::ParticleSourceParams s;
   s.kind = dem::SourceKind::RandomFill;
-  s.from_flume = true;
+  s.generated = true;
   s.material = r.required_string("material");
   check_material(r, "material", s.material, ctx);
-  for (const auto& p : g.release) s.polygon.push_back(Space<2>::to3(p));
+  s.polygon = polygon;
   s.box_min = s.box_max = s.polygon.front();
   for (const Vec3& p : s.polygon) {
     s.box_min = s.box_min.cwiseMin(p);
@@ -49,8 +51,6 @@ dem::ParticleSourceParams read_release(TomlReader& r, const geometry::FlumeGeome
   r.finish();
   return s;
 }
-
-}  // namespace
 
 void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
   if (ctx.dimension != 2) r.fail("flume", "the flume is a 2D scenario: set run.dimension = 2");
@@ -94,11 +94,14 @@ void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
     walls.gate.motion.remove_at = f.gate_open;
   }
   for (dem::WallParams* w : {&walls.chute, &walls.arc, &walls.barrier, &walls.gate, &walls.lid}) {
-    w->from_flume = true;
+    w->generated = true;
     s.walls.push_back(*w);
   }
-  if (auto release = r.optional_table("release"))
-    s.sources.push_back(read_release(*release, g, ctx));
+  if (auto release = r.optional_table("release")) {
+    std::vector<Vec3> polygon;
+    for (const auto& p : g.release) polygon.push_back(Space<2>::to3(p));
+    s.sources.push_back(read_release(*release, polygon, ctx));
+  }
   r.finish();
   s.flume = f;
 }

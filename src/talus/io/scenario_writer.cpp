@@ -218,8 +218,28 @@ class Writer {
            {"front_quantile", f.front_quantile},
            {"profile_bin", f.profile_bin},
            {"tail_thickness", f.tail_thickness}};
+    add_release(t, s);
+    return t;
+  }
+
+  static Json dam_break(const dem::DamBreakParams& d, const dem::DemScenario& s) {
+    Json t{{"width", d.width},
+           {"height", d.height},
+           {"floor_length", d.floor_length},
+           {"wall_material", d.wall_material},
+           {"gate_open", d.gate_open},
+           {"segment_length", d.segment_length},
+           {"segments", d.segments},
+           {"profile_bin", d.profile_bin},
+           {"toe_thickness", d.toe_thickness}};
+    add_release(t, s);
+    return t;
+  }
+
+  // The generated fill as the "release" sub-table.
+  static void add_release(Json& t, const dem::DemScenario& s) {
     for (const auto& src : s.sources) {
-      if (!src.from_flume) continue;
+      if (!src.generated) continue;
       Json r{{"material", src.material},
              {"radius_min", src.radius_min},
              {"radius_max", src.radius_max},
@@ -231,7 +251,6 @@ class Writer {
                         : Json(false);
       t["release"] = std::move(r);
     }
-    return t;
   }
 
   static Json output(const dem::OutputParams& o) {
@@ -254,13 +273,14 @@ Json scenario_table(const dem::DemScenario& s) {
   for (const auto& m : s.materials) materials.push_back(Writer::material(m));
   // What [flume] generates is written as [flume], not as walls and particles.
   for (const auto& wall : s.walls) {
-    if (!wall.from_flume) walls.push_back(w.wall(wall));
+    if (!wall.generated) walls.push_back(w.wall(wall));
   }
   for (const auto& source : s.sources) {
-    if (!source.from_flume) sources.push_back(w.source(source));
+    if (!source.generated) sources.push_back(w.source(source));
   }
   doc["materials"] = std::move(materials);
   if (s.flume) doc["flume"] = Writer::flume(*s.flume, s);
+  if (s.dam_break) doc["dam_break"] = Writer::dam_break(*s.dam_break, s);
   if (!walls.empty()) doc["walls"] = std::move(walls);
   if (!sources.empty()) doc["particles"] = std::move(sources);
   doc["output"] = Writer::output(s.output);
