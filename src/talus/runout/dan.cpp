@@ -103,7 +103,7 @@ void DanModel::step(double dt) {
 
   s_old_ = b_.s;
   for (std::size_t i = 0; i < n; ++i) {
-    b_.s[i] += 0.5 * dt * (v_new_[i] + b_.v[i]);
+    b_.s[i] += dt * v_new_[i];  // symplectic Euler: see dan.hpp
     if (!std::isfinite(b_.s[i]) || !std::isfinite(v_new_[i]))
       throw RunError(fmt::format("DAN: block {} has a non-finite position or velocity at t = {} s",
                                  i, b_.time));

@@ -10,8 +10,14 @@
 //   basal stress         from the rheology, normal stress rho H (g cos psi + v^2 kappa)
 //   velocity             v_i = v_i' + a_i dt, friction never reverses a block
 //   smoothing            momentum-conserving form of eq. 2.40 (smoothing.hpp)
-//   position             S_i = S_i' + dt/2 (v_i + v_i')
+//   position             S_i = S_i' + dt v_i (semi-implicit Euler; see below)
 //   earth pressure       k_j from the strain of block j (earth_pressure.hpp)
+// The position update deviates from Kuen's eq. 2.31, S_i = S_i' + dt/2 (v_i +
+// v_i'): with v_i = v_i' + dt a(S') that scheme multiplies the energy of an
+// oscillation of frequency w by 1 + (w dt)^2 / 2 every step (the determinant
+// of its update matrix), so block-to-block pressure waves grow unless the
+// smoothing damps them; on the flume it blew up at 400 blocks. Using the new
+// velocity (symplectic Euler) has determinant 1 and is stable for w dt < 2.
 // Depths are measured normal to the path and block lengths along it (eq. 2.32
 // as printed); the release is cut into vertical slices (release.hpp).
 #include <vector>
