@@ -168,7 +168,9 @@ double DanModel::max_speed() const {
 }
 
 bool DanModel::at_rest() const {
-  return std::all_of(b_.v.begin(), b_.v.end(), [](double v) { return v == 0.0; });
+  // Friction stops blocks exactly, but the smoothing that follows in the same
+  // step hands stopped blocks round-off speeds from moving neighbours.
+  return std::all_of(b_.v.begin(), b_.v.end(), [](double v) { return std::abs(v) <= kRestSpeed; });
 }
 
 }  // namespace talus::runout

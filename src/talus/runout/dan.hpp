@@ -75,7 +75,9 @@ class DanModel {
   double momentum() const;         // sum m_i v_i along the path
   double kinetic_energy() const;
   double max_speed() const;
-  bool at_rest() const;  // every block's velocity exactly 0 (held by friction)
+  // Every block slower than kRestSpeed (held by friction).
+  bool at_rest() const;
+  static constexpr double kRestSpeed = 1e-6;  // m/s
 
  private:
   double width_between(std::size_t j) const;
