@@ -1,5 +1,6 @@
 #pragma once
 // From a validated scenario to a ready DAN model and what its results need.
+#include "talus/runout/results.hpp"
 #include "talus/runout/scenario.hpp"
 
 namespace talus::runout {
@@ -16,5 +17,9 @@ DanSetup build_dan(const RunoutScenario& scenario);
 // The path of a scenario alone (for the flume, the same FlumeGeometry as the
 // DEM scenario uses).
 RunoutPath build_path(const PathSpec& spec);
+
+// Builds and runs a scenario without writing anything (for `talus compare`
+// and calibration): the flume results of the finished run.
+RunoutResults simulate_dan(const RunoutScenario& scenario);
 
 }  // namespace talus::runout
