@@ -20,6 +20,9 @@
 #include "talus/dem/driver.hpp"
 #include "talus/dem/output_observer.hpp"
 #include "talus/io/scenario.hpp"
+#include "talus/io/scenario_runout.hpp"
+#include "talus/runout/builder.hpp"
+#include "talus/runout/output_observer.hpp"
 
 namespace fs = std::filesystem;
 
@@ -110,6 +113,40 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   return 0;
 }
 
+// --- runout (method = "runout"): 1D DAN ---
+int run_runout_scenario(const io::ScenarioFile& file, const RunOptions& opt) {
+  const auto sc = io::parse_runout_scenario(file);
+  const fs::path out =
+      opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name) : fs::path(opt.out);
+  const auto t_setup = std::chrono::steady_clock::now();
+  auto setup = runout::build_dan(sc);
+  prepare_output(out, opt.force);
+  std::ofstream(out / "scenario.toml") << io::runout_scenario_to_toml(sc);
+  runout::DanOutputs outputs(out);
+  if (!opt.quiet && isatty(STDERR_FILENO))
+    outputs.progress = [dt = sc.control.time_step > 0 ? sc.control.time_step : 1e-4](
+                           double t, double e, double sps) { progress_line(t, e, sps, dt); };
+  runout::RunoutTracker tracker(setup.barrier_start_s, sc.tail_fraction);
+  RunSummary summary;
+  summary.output = out;
+  summary.setup_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_setup).count();
+  try {
+    const auto stats = runout::run_dan(setup.model, sc.control, tracker, {&outputs});
+    summary.steps = stats.steps;
+    summary.loop_seconds = stats.wall_seconds;
+    outputs.write_results(tracker.results());
+    write_runout_summary(sc, setup.model, tracker.results(), summary, "completed", "");
+  } catch (const RunError& e) {
+    write_runout_summary(sc, setup.model, tracker.results(), summary, "failed", e.what());
+    throw;
+  }
+  if (!opt.quiet)
+    fmt::print(stderr, "talus: {} steps in {:.3f} s; results in {}\n", summary.steps,
+               summary.loop_seconds, out.string());
+  return 0;
+}
+
 }  // namespace
 
 int run_command(const RunOptions& opt) {
@@ -130,6 +167,10 @@ int run_command(const RunOptions& opt) {
   }
   const auto file =
       io::load_scenario_file(scenario_path, resume ? std::vector<std::string>{} : opt.sets);
+  if (file.method == "runout") {
+    if (resume) throw InputError(out.string() + ": runout runs write no checkpoints to resume");
+    return run_runout_scenario(file, opt);
+  }
   const auto sc = io::parse_dem_scenario(file);
   if (!resume) {
     out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
@@ -144,6 +185,13 @@ int run_command(const RunOptions& opt) {
 
 int validate_command(const ValidateOptions& opt) {
   const auto file = io::load_scenario_file(opt.file, opt.sets);
+  if (file.method == "runout") {
+    const auto rsc = io::parse_runout_scenario(file);
+    const auto setup = runout::build_dan(rsc);
+    fmt::print("{}: valid (1D DAN runout, {} boundary blocks, {:.4g} m^3 released)\n", opt.file,
+               setup.model.size(), setup.model.total_mass() / rsc.params.density);
+    return 0;
+  }
   const auto sc = io::parse_dem_scenario(file);
   // Building places the particles and checks the time step, without settling.
   double dt = 0, crit = 0;

@@ -5,6 +5,7 @@
 
 #include "talus/core/version.hpp"
 #include "talus/io/scenario.hpp"
+#include "talus/io/scenario_runout.hpp"
 
 namespace talus::app {
 
@@ -70,5 +71,55 @@ template void write_dem_summary<2>(const dem::DemScenario&, const dem::DemRun<2>
 template void write_dem_summary<3>(const dem::DemScenario&, const dem::DemRun<3>&,
                                    const dem::DemOutputs<3>&, const RunSummary&, int,
                                    const std::string&, const std::string&);
+
+// --- runout (method = "runout") ---
+void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanModel& model,
+                          const runout::RunoutResults& r, const RunSummary& summary,
+                          const std::string& status, const std::string& error) {
+  using nlohmann::json;
+  auto runup = [](const runout::RunUp& u) {
+    return json{{"elevation_m", u.elevation},
+                {"s_m", u.s},
+                {"distance_on_barrier_m", u.distance_on_barrier},
+                {"time_s", u.time}};
+  };
+  json j = {
+      {"talus_version", talus::version()},
+      {"status", status},
+      {"method", "runout"},
+      {"model", "dan"},
+      {"dimension", 1},
+      {"scenario", io::runout_scenario_to_json(sc)},
+      {"resolved",
+       {{"boundary_blocks", model.size()},
+        {"time_step_s", sc.control.time_step > 0 ? json(sc.control.time_step) : json("auto")},
+        {"path_s_begin_m", model.path().s_begin()},
+        {"path_s_end_m", model.path().s_end()}}},
+      {"run",
+       {{"steps", summary.steps},
+        {"simulated_time_s", model.blocks().time},
+        {"loop_wall_s", summary.loop_seconds},
+        {"setup_wall_s", summary.setup_seconds},
+        {"block_steps_per_s",
+         summary.loop_seconds > 0 ? model.size() * summary.steps / summary.loop_seconds : 0.0}}},
+      {"metrics",
+       {{"mass_kg", model.total_mass()},
+        {"volume_m3", model.deformed_volume()},
+        {"front_s_m", model.blocks().s.back()},
+        {"tail_s_m", r.tail_s},
+        {"tail_s_absolute_m", r.tail_s_absolute},
+        {"barrier_arrival_time_s", r.barrier_arrival_time},
+        {"rest_time_s", r.rest_time},
+        {"runup_max", runup(r.runup_max)},
+        {"runup_final", runup(r.runup_final)},
+        {"max_speed_m_s", r.max_speed},
+        {"max_depth_m", r.max_depth},
+        {"kinetic_energy_J", model.kinetic_energy()}}},
+  };
+  if (!error.empty()) j["error"] = error;
+  const auto tmp = summary.output / "summary.json.tmp";
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  std::filesystem::rename(tmp, summary.output / "summary.json");
+}
 
 }  // namespace talus::app

@@ -7,6 +7,8 @@
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/output_observer.hpp"
+#include "talus/runout/results.hpp"
+#include "talus/runout/scenario.hpp"
 
 namespace talus::app {
 
@@ -22,5 +24,9 @@ template <int D>
 void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
                        const dem::DemOutputs<D>& outputs, const RunSummary& summary, int threads,
                        const std::string& status, const std::string& error);
+
+void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanModel& model,
+                          const runout::RunoutResults& results, const RunSummary& summary,
+                          const std::string& status, const std::string& error);
 
 }  // namespace talus::app

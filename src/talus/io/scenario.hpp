@@ -14,7 +14,7 @@ namespace talus::io {
 
 struct ScenarioFile {
   std::string path;    // as given; relative paths inside resolve against its folder
-  std::string method;  // "dem" (later "runout", "mpm")
+  std::string method;  // "dem" or "runout" (later "mpm")
   toml::table table;   // with the --set overrides applied
 };
 

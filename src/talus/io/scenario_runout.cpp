@@ -1,0 +1,329 @@
+// Runout scenario files: [run], [path], [material], [earth_pressure],
+// [smoothing], [release], [output]. Every key goes through a TomlReader, so a
+// bad or unknown key is reported with file, line and key before anything runs.
+#include "talus/io/scenario_runout.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "talus/core/error.hpp"
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io {
+namespace {
+
+using detail::between;
+using detail::non_negative;
+using detail::number_in;
+using detail::positive;
+using detail::required_number_in;
+using runout::EarthPressureMode;
+using runout::PathKind;
+using runout::ReleaseKind;
+using runout::RheologyKind;
+
+const std::vector<std::string_view> kTopLevelKeys = {
+    "method",   "name",           "description", "run",     "path",
+    "material", "earth_pressure", "smoothing",   "release", "output"};
+const EnumNames<int> kModels = {{"dan", 0}};
+const EnumNames<PathKind> kPathKinds = {{"flume", PathKind::Flume}, {"profile", PathKind::Profile}};
+const EnumNames<ReleaseKind> kReleaseKinds = {{"flume", ReleaseKind::Flume},
+                                              {"polygon", ReleaseKind::Polygon}};
+const EnumNames<RheologyKind> kRheologies = {{"frictional", RheologyKind::Frictional},
+                                             {"voellmy", RheologyKind::Voellmy}};
+const EnumNames<EarthPressureMode> kPressureModes = {
+    {"hungr", EarthPressureMode::Hungr},
+    {"savage_hutter", EarthPressureMode::SavageHutter},
+    {"constant", EarthPressureMode::Constant}};
+
+void read_run(TomlReader& r, runout::RunoutScenario& s) {
+  r.enumeration("model", kModels, 0);
+  auto& c = s.control;
+  c.duration = required_number_in(r, "duration", positive());
+  if (r.is_string("time_step")) {
+    r.required_enum<int>("time_step", {{"auto", 0}});
+    c.time_step = 0.0;
+  } else {
+    const auto dt = r.optional_number("time_step");
+    r.expect(!dt || *dt > 0, "time_step", "a positive number (s) or \"auto\"");
+    c.time_step = dt.value_or(0.0);
+  }
+  c.courant = number_in(r, "courant", c.courant, between(0.0, 1.0, true, false));
+  s.params.gravity = number_in(r, "gravity", s.params.gravity, positive());
+  c.stop_at_rest = r.boolean("stop_at_rest", c.stop_at_rest);
+  r.finish();
+}
+
+void read_path(TomlReader& r, const detail::DemContext& ctx, runout::PathSpec& p) {
+  p.kind = r.required_enum("type", kPathKinds);
+  p.spacing = number_in(r, "spacing", p.spacing, positive());
+  if (p.kind == PathKind::Flume) {
+    r.reject({"file", "smoothing_length", "barrier_start"},
+             "is not used by a path of type 'flume'");
+    p.beta_deg = required_number_in(r, "beta", between(0.0, 90.0, true, true));
+    p.arc_radius = required_number_in(r, "arc_radius", positive());
+    p.l_star = detail::optional_number_in(r, "l_star", positive());
+    p.barrier_length = detail::optional_number_in(r, "barrier_length", positive());
+    p.width = number_in(r, "width", p.width, positive());
+    try {
+      geometry::make_flume(p.beta_deg, p.arc_radius, p.l_star, p.barrier_length);
+    } catch (const InputError& e) {
+      r.fail("type", e.what());
+    }
+  } else {
+    r.reject({"beta", "arc_radius", "l_star", "barrier_length", "width"},
+             "is not used by a path of type 'profile' (the width is the CSV's third column)");
+    p.profile_file = detail::required_file(r, "file", ctx);
+    p.smoothing_length = number_in(r, "smoothing_length", 0.0, non_negative());
+    p.barrier_start = r.optional_number("barrier_start");
+    read_profile_csv(p.profile_file, p.profile_points, p.profile_widths);
+  }
+  r.finish();
+}
+
+void read_material(TomlReader& r, runout::DanParams& d) {
+  d.density = required_number_in(r, "density", positive());
+  const double phi_i = r.required_angle("internal_friction");
+  r.expect(phi_i > 0 && phi_i < M_PI / 2, "internal_friction", "an angle in (0, 90) degrees");
+  d.pressure.phi_internal = phi_i;
+  auto& rh = d.rheology;
+  rh.kind = r.enumeration("rheology", kRheologies, RheologyKind::Frictional);
+  if (rh.kind == RheologyKind::Frictional) {
+    r.reject({"friction_coefficient", "turbulence"}, "is not used by the 'frictional' rheology");
+    const double phi_b = r.required_angle("basal_friction");
+    r.expect(phi_b >= 0 && phi_b < M_PI / 2, "basal_friction", "an angle in [0, 90) degrees");
+    rh.tan_friction = std::tan(phi_b);
+    rh.pore_pressure_ratio =
+        number_in(r, "pore_pressure_ratio", 0.0, between(0.0, 1.0, false, true));
+  } else {
+    r.reject({"basal_friction", "pore_pressure_ratio"}, "is not used by the 'voellmy' rheology");
+    rh.tan_friction = required_number_in(r, "friction_coefficient", non_negative());
+    rh.turbulence = required_number_in(r, "turbulence", positive());
+  }
+  d.pressure.tan_phi_basal = rh.tan_friction;
+  r.finish();
+}
+
+void read_earth_pressure(TomlReader& r, runout::EarthPressure& e) {
+  e.mode = r.enumeration("model", kPressureModes, EarthPressureMode::Hungr);
+  if (e.mode == EarthPressureMode::Constant) {
+    r.reject({"lambda", "passive_strain", "initial", "modify_basal_angle"},
+             "is not used by the 'constant' model");
+    e.constant = required_number_in(r, "k", non_negative());
+  } else {
+    r.reject({"k"}, "is only used by the 'constant' model");
+    e.lambda = number_in(r, "lambda", e.lambda, non_negative());
+    e.modify_basal_angle = r.boolean("modify_basal_angle", e.modify_basal_angle);
+    if (e.mode == EarthPressureMode::Hungr) {
+      e.passive_strain = number_in(r, "passive_strain", e.passive_strain, positive());
+      e.constant = number_in(r, "initial", e.constant, positive());
+    } else {
+      r.reject({"passive_strain", "initial"}, "is only used by the 'hungr' model");
+    }
+  }
+  r.finish();
+}
+
+void read_smoothing(TomlReader& r, runout::SmoothingParams& s) {
+  s.enabled = r.boolean("enabled", s.enabled);
+  s.c_end = number_in(r, "c_end", s.c_end, non_negative());
+  s.c_inner = number_in(r, "c_inner", s.c_inner, non_negative());
+  s.reference_time_step = number_in(r, "reference_time_step", s.reference_time_step, positive());
+  r.finish();
+}
+
+void read_release(TomlReader& r, const runout::PathSpec& path, runout::ReleaseSpec& rel) {
+  rel.kind = r.required_enum("type", kReleaseKinds);
+  const auto blocks = r.integer("blocks", static_cast<std::int64_t>(rel.blocks));
+  r.expect(blocks >= 2 && blocks <= 1000000, "blocks", "an integer in [2, 1000000]");
+  rel.blocks = static_cast<std::size_t>(blocks);
+  if (rel.kind == ReleaseKind::Flume) {
+    r.reject({"polygon"}, "is not used by a release of type 'flume'");
+    if (path.kind != PathKind::Flume)
+      r.fail("type", "a release of type 'flume' needs a path of type 'flume'");
+  } else {
+    for (const Vec3& v : r.vec3_list("polygon")) {
+      r.expect(v.z() == 0.0, "polygon", "points [x, y] in the path's vertical plane");
+      rel.polygon.emplace_back(v.x(), v.y());
+    }
+    r.expect(rel.polygon.size() >= 3, "polygon", "three or more points [x, y]");
+  }
+  r.finish();
+}
+
+void read_output(TomlReader& r, runout::RunoutScenario& s) {
+  s.control.series_interval = number_in(r, "series_interval", 0.01, positive());
+  s.control.snapshot_interval = number_in(r, "snapshot_interval", 0.1, non_negative());
+  s.tail_fraction = number_in(r, "tail_fraction", s.tail_fraction, between(0.0, 1.0, true, true));
+  r.finish();
+}
+
+TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty) {
+  if (auto table = root.optional_table(key)) return *table;
+  return TomlReader(empty, root.file(), std::string(key), std::string(key));
+}
+
+double deg(double rad) { return rad * 180.0 / M_PI; }
+
+}  // namespace
+
+void read_profile_csv(const std::string& path, std::vector<Eigen::Vector2d>& points,
+                      std::vector<double>& widths) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot open the profile file", path));
+  std::string line;
+  int line_no = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
+    std::string compact;
+    for (char c : line)
+      if (c != ' ' && c != '\t') compact += c;
+    if (!header) {
+      if (compact != "x,y,width")
+        throw InputError(fmt::format("{}:{}: expected the header \"x,y,width\", got \"{}\"", path,
+                                     line_no, line));
+      header = true;
+      continue;
+    }
+    std::stringstream row(compact);
+    double v[3];
+    std::string cell;
+    int count = 0;
+    while (std::getline(row, cell, ',')) {
+      std::size_t used = 0;
+      bool ok = count < 3;
+      try {
+        if (ok) v[count] = std::stod(cell, &used);
+      } catch (const std::exception&) {
+        ok = false;
+      }
+      if (!ok || used != cell.size() || !std::isfinite(v[count]))
+        throw InputError(fmt::format("{}:{}: expected three numbers x,y,width, got \"{}\"", path,
+                                     line_no, line));
+      ++count;
+    }
+    if (count != 3)
+      throw InputError(
+          fmt::format("{}:{}: expected three numbers x,y,width, got \"{}\"", path, line_no, line));
+    if (!points.empty() && !(v[0] > points.back().x()))
+      throw InputError(
+          fmt::format("{}:{}: x = {} does not increase along the profile", path, line_no, v[0]));
+    if (!(v[2] > 0))
+      throw InputError(fmt::format("{}:{}: width {} must be positive", path, line_no, v[2]));
+    points.emplace_back(v[0], v[1]);
+    widths.push_back(v[2]);
+  }
+  if (points.size() < 2)
+    throw InputError(fmt::format("{}: a profile needs at least two points", path));
+}
+
+runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
+  TomlReader root(file.table, file.path);
+  for (std::string_view key : kTopLevelKeys) root.mark_read(key);
+  root.finish();
+  runout::RunoutScenario s;
+  const std::string method = root.required_string("method");
+  if (method != "runout") root.expect(false, "method", "\"runout\"");
+  s.name = root.string("name", std::filesystem::path(file.path).stem().string());
+  s.description = root.string("description", "");
+  detail::DemContext ctx;
+  ctx.folder = std::filesystem::path(file.path).parent_path();
+  const toml::table empty;
+
+  TomlReader run = root.required_table("run");
+  read_run(run, s);
+  TomlReader path = root.required_table("path");
+  read_path(path, ctx, s.path);
+  TomlReader material = root.required_table("material");
+  read_material(material, s.params);
+  TomlReader pressure = table_or_empty(root, "earth_pressure", empty);
+  read_earth_pressure(pressure, s.params.pressure);
+  TomlReader smoothing = table_or_empty(root, "smoothing", empty);
+  read_smoothing(smoothing, s.params.smoothing);
+  TomlReader release = root.required_table("release");
+  read_release(release, s.path, s.release);
+  TomlReader output = table_or_empty(root, "output", empty);
+  read_output(output, s);
+  root.finish();
+  return s;
+}
+
+nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) {
+  using Json = nlohmann::ordered_json;
+  const auto& p = s.params;
+  Json run = {{"model", "dan"}, {"duration", s.control.duration}};
+  run["time_step"] = s.control.time_step > 0 ? Json(s.control.time_step) : Json("auto");
+  run["courant"] = s.control.courant;
+  run["gravity"] = p.gravity;
+  run["stop_at_rest"] = s.control.stop_at_rest;
+  Json path = {{"type", detail::name_of(kPathKinds, s.path.kind)}, {"spacing", s.path.spacing}};
+  if (s.path.kind == PathKind::Flume) {
+    path["beta"] = s.path.beta_deg;
+    path["arc_radius"] = s.path.arc_radius;
+    if (s.path.l_star) path["l_star"] = *s.path.l_star;
+    if (s.path.barrier_length) path["barrier_length"] = *s.path.barrier_length;
+    path["width"] = s.path.width;
+  } else {
+    path["file"] = s.path.profile_file;
+    path["smoothing_length"] = s.path.smoothing_length;
+    if (s.path.barrier_start) path["barrier_start"] = *s.path.barrier_start;
+  }
+  Json material = {{"density", p.density},
+                   {"internal_friction", deg(p.pressure.phi_internal)},
+                   {"rheology", detail::name_of(kRheologies, p.rheology.kind)}};
+  if (p.rheology.kind == RheologyKind::Frictional) {
+    material["basal_friction"] = deg(std::atan(p.rheology.tan_friction));
+    material["pore_pressure_ratio"] = p.rheology.pore_pressure_ratio;
+  } else {
+    material["friction_coefficient"] = p.rheology.tan_friction;
+    material["turbulence"] = p.rheology.turbulence;
+  }
+  Json pressure = {{"model", detail::name_of(kPressureModes, p.pressure.mode)}};
+  if (p.pressure.mode == EarthPressureMode::Constant) {
+    pressure["k"] = p.pressure.constant;
+  } else {
+    pressure["lambda"] = p.pressure.lambda;
+    pressure["modify_basal_angle"] = p.pressure.modify_basal_angle;
+    if (p.pressure.mode == EarthPressureMode::Hungr) {
+      pressure["passive_strain"] = p.pressure.passive_strain;
+      pressure["initial"] = p.pressure.constant;
+    }
+  }
+  Json smoothing = {{"enabled", p.smoothing.enabled},
+                    {"c_end", p.smoothing.c_end},
+                    {"c_inner", p.smoothing.c_inner},
+                    {"reference_time_step", p.smoothing.reference_time_step}};
+  Json release = {{"type", detail::name_of(kReleaseKinds, s.release.kind)},
+                  {"blocks", s.release.blocks}};
+  if (s.release.kind == ReleaseKind::Polygon) {
+    Json poly = Json::array();
+    for (const auto& v : s.release.polygon) poly.push_back({v.x(), v.y()});
+    release["polygon"] = poly;
+  }
+  Json output = {{"series_interval", s.control.series_interval},
+                 {"snapshot_interval", s.control.snapshot_interval},
+                 {"tail_fraction", s.tail_fraction}};
+  return Json{{"method", "runout"},
+              {"name", s.name},
+              {"description", s.description},
+              {"run", run},
+              {"path", path},
+              {"material", material},
+              {"earth_pressure", pressure},
+              {"smoothing", smoothing},
+              {"release", release},
+              {"output", output}};
+}
+
+std::string runout_scenario_to_toml(const runout::RunoutScenario& s) {
+  return detail::json_to_toml(runout_scenario_to_json(s));
+}
+
+}  // namespace talus::io

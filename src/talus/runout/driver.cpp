@@ -1,0 +1,65 @@
+#include "talus/runout/driver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace talus::runout {
+
+DanRunStats run_dan(DanModel& model, const DanRunControl& control, RunoutTracker& tracker,
+                    const std::vector<DanObserver*>& observers) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  auto last_progress = start;
+  DanRunStats stats;
+  const double end = control.duration;
+  // Output times are multiples of the intervals; a step never jumps past one
+  // by more than the step itself (the sample is taken after that step).
+  double next_series = model.blocks().time, next_snapshot = model.blocks().time;
+  double last_series = -1.0, last_snapshot = -1.0;  // times already written
+  auto emit = [&](bool force) {
+    const double t = model.blocks().time;
+    const double eps = 1e-9 * std::max(1.0, end);
+    if ((t + eps >= next_series || force) && t != last_series) {
+      last_series = t;
+      tracker.sample_front(model);
+      for (auto* o : observers) o->on_series(model);
+      while (next_series <= t + eps) next_series += std::max(control.series_interval, 1e-12);
+    }
+    const bool snap_due = control.snapshot_interval > 0 && t + eps >= next_snapshot;
+    if ((snap_due || force) && t != last_snapshot) {
+      last_snapshot = t;
+      for (auto* o : observers) o->on_snapshot(model);
+      while (control.snapshot_interval > 0 && next_snapshot <= t + eps)
+        next_snapshot += control.snapshot_interval;
+    }
+  };
+  tracker.observe_step(model);
+  emit(true);
+  while (model.blocks().time < end - 1e-12) {
+    double dt = control.time_step > 0 ? control.time_step : model.stable_time_step(control.courant);
+    dt = std::min(dt, end - model.blocks().time);
+    model.step(dt);
+    ++stats.steps;
+    tracker.observe_step(model);
+    if (control.stop_at_rest && model.at_rest()) {
+      stats.stopped_at_rest = true;
+      break;
+    }
+    emit(false);
+    const auto now = clock::now();
+    if (std::chrono::duration<double>(now - last_progress).count() >= control.progress_seconds) {
+      const double wall = std::chrono::duration<double>(now - start).count();
+      for (auto* o : observers) o->on_progress(model.blocks().time, end, stats.steps / wall);
+      last_progress = now;
+    }
+  }
+  emit(true);
+  tracker.finish(model);
+  stats.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
+  for (auto* o : observers)
+    o->on_progress(end, end, stats.steps / std::max(stats.wall_seconds, 1e-9));
+  return stats;
+}
+
+}  // namespace talus::runout

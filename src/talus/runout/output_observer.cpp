@@ -1,0 +1,63 @@
+#include "talus/runout/output_observer.hpp"
+
+#include <cmath>
+
+namespace talus::runout {
+
+DanOutputs::DanOutputs(std::filesystem::path dir) : dir_(std::move(dir)) {
+  series_ = std::make_unique<io::CsvSeries>(
+      dir_ / "series.csv",
+      std::vector<std::string>{"time", "front_s", "tail_s", "front_x", "front_y", "max_speed",
+                               "max_depth", "kinetic_energy", "momentum", "mass", "volume"},
+      false);
+  blocks_ = std::make_unique<io::PvdSeries>(dir_, "blocks");
+}
+
+void DanOutputs::on_series(const DanModel& m) {
+  const auto& b = m.blocks();
+  const Vec2 front = m.path().point(b.s.back());
+  double max_depth = 0;
+  for (std::size_t j = 0; j + 1 < m.size(); ++j) max_depth = std::max(max_depth, m.block_depth(j));
+  series_->row({b.time, b.s.back(), b.s.front(), front.x(), front.y(), m.max_speed(), max_depth,
+                m.kinetic_energy(), m.momentum(), m.total_mass(), m.deformed_volume()});
+}
+
+void DanOutputs::on_snapshot(const DanModel& m) {
+  io::ParticleFrame f;
+  const auto& b = m.blocks();
+  auto& depth = f.extra_scalars["depth"];
+  auto& s_out = f.extra_scalars["s"];
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Vec2 p = m.path().point(b.s[i]);
+    const double a = m.path().angle(b.s[i]);
+    f.position.emplace_back(p.x(), p.y(), 0.0);
+    f.velocity.emplace_back(b.v[i] * std::cos(a), b.v[i] * std::sin(a), 0.0);
+    f.angular_velocity.emplace_back(0.0, 0.0, 0.0);
+    f.radius.push_back(m.boundary_depth(i));
+    f.id.push_back(static_cast<int64_t>(i));
+    f.material.push_back(0);
+    f.contacts.push_back(0);
+    depth.push_back(m.boundary_depth(i));
+    s_out.push_back(b.s[i]);
+  }
+  blocks_->add(b.time, f);
+  series_->flush();
+}
+
+void DanOutputs::on_progress(double time, double end, double steps_per_s) {
+  if (progress) progress(time, end, steps_per_s);
+}
+
+void DanOutputs::write_results(const RunoutResults& r) const {
+  io::CsvSeries deposit(dir_ / "deposit.csv",
+                        {"s", "x_bed", "y_bed", "depth", "x_surface", "y_surface"}, false);
+  for (const auto& p : r.deposit)
+    deposit.row({p.s, p.x_bed, p.y_bed, p.depth, p.x_surface, p.y_surface});
+  deposit.flush();
+  io::CsvSeries front(dir_ / "front.csv", {"time", "s", "x", "y"}, false);
+  for (const auto& f : r.front) front.row({f.time, f.s, f.x, f.y});
+  front.flush();
+  series_->flush();
+}
+
+}  // namespace talus::runout

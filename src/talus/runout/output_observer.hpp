@@ -1,0 +1,34 @@
+#pragma once
+// Files of a DAN run's output folder: series.csv (front, tail, speeds, energy,
+// mass, momentum), blocks.pvd (ParaView: the boundary blocks as points on the
+// bed with depth and velocity), and at the end deposit.csv (the final surface
+// profile) and front.csv (front along the path versus time). The model knows
+// nothing of files; this observer sits between it and the io writers.
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "talus/io/csv_writer.hpp"
+#include "talus/io/vtk_writer.hpp"
+#include "talus/runout/driver.hpp"
+
+namespace talus::runout {
+
+class DanOutputs final : public DanObserver {
+ public:
+  explicit DanOutputs(std::filesystem::path dir);
+  void on_series(const DanModel& model) override;
+  void on_snapshot(const DanModel& model) override;
+  void on_progress(double time, double end, double steps_per_s) override;
+  // Writes deposit.csv and front.csv from the finished results.
+  void write_results(const RunoutResults& results) const;
+
+  std::function<void(double, double, double)> progress;  // set by the app
+
+ private:
+  std::filesystem::path dir_;
+  std::unique_ptr<io::CsvSeries> series_;
+  std::unique_ptr<io::PvdSeries> blocks_;
+};
+
+}  // namespace talus::runout

@@ -1,0 +1,47 @@
+#pragma once
+// A runout scenario as plain data, filled and validated by
+// io::parse_runout_scenario (angles in radians). The model is built from it by
+// build_dan (builder.hpp), which reads no files.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "talus/runout/dan.hpp"
+#include "talus/runout/driver.hpp"
+
+namespace talus::runout {
+
+enum class PathKind { Flume, Profile };
+enum class ReleaseKind { Flume, Polygon };
+
+struct PathSpec {
+  PathKind kind = PathKind::Flume;
+  // Flume: geometry::make_flume(beta, arc_radius, l_star, barrier_length).
+  double beta_deg = 33.0, arc_radius = 0.10;
+  std::optional<double> l_star, barrier_length;
+  // Profile: points (x, y) and widths, read from the CSV by io.
+  std::string profile_file;
+  std::vector<Vec2> profile_points;
+  std::vector<double> profile_widths;
+  double smoothing_length = 0.0;        // m
+  std::optional<double> barrier_start;  // s where the barrier starts (profile)
+  double width = 1.0;                   // channel width (flume), m
+  double spacing = 1e-3;                // path table resolution, m
+};
+
+struct ReleaseSpec {
+  ReleaseKind kind = ReleaseKind::Flume;  // the triangle behind the flume's gate
+  std::vector<Vec2> polygon;              // Polygon
+  std::size_t blocks = 100;               // boundary blocks
+};
+
+struct RunoutScenario {
+  std::string name, description;
+  DanParams params;
+  PathSpec path;
+  ReleaseSpec release;
+  DanRunControl control;
+  double tail_fraction = 0.1;
+};
+
+}  // namespace talus::runout
