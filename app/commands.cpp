@@ -28,6 +28,20 @@ namespace fs = std::filesystem;
 
 namespace talus::app {
 
+void prepare_output(const std::string& out_text, bool force) {
+  const fs::path out(out_text);
+  if (fs::exists(out) && !fs::is_directory(out))
+    throw InputError(out.string() + ": output path exists and is not a folder");
+  if (fs::exists(out) && !fs::is_empty(out)) {
+    if (!force)
+      throw InputError(out.string() +
+                       ": output folder exists and is not empty; use --force to overwrite it or "
+                       "--out to choose another");
+    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
+  }
+  fs::create_directories(out);
+}
+
 std::string scenarios_folder() {
   if (const char* env = std::getenv("TALUS_SCENARIOS")) return env;
   return std::string(TALUS_SOURCE_DIR) + "/scenarios";
@@ -41,20 +55,6 @@ void progress_line(double t, double end, double sps, double dt) {
              left);
   if (t >= end) fmt::print(stderr, "\n");
   std::fflush(stderr);
-}
-
-// Refuses to write into a folder that already holds files, unless forced.
-void prepare_output(const fs::path& out, bool force) {
-  if (fs::exists(out) && !fs::is_directory(out))
-    throw InputError(out.string() + ": output path exists and is not a folder");
-  if (fs::exists(out) && !fs::is_empty(out)) {
-    if (!force)
-      throw InputError(out.string() +
-                       ": output folder exists and is not empty; use --force to overwrite it or "
-                       "--out to choose another");
-    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
-  }
-  fs::create_directories(out);
 }
 
 template <int D>

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "calibrate.hpp"
 #include "commands.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
@@ -33,6 +34,24 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--set", val.sets, "override a scenario value: key=value");
 
   auto* list_cmd = cli.add_subcommand("list", "list the bundled scenarios");
+  CalibrateOptions cal;
+  auto* cal_cmd = cli.add_subcommand(
+      "calibrate", "fit one parameter to measured numbers by running the scenario per trial value");
+  cal_cmd->add_option("file", cal.file, "scenario file")->required();
+  cal_cmd->add_option("--parameter,-p", cal.parameter, "the key to vary, as for --set")->required();
+  cal_cmd->add_option("--values", cal.values, "trial values (comma separated)")
+      ->required()
+      ->delimiter(',');
+  cal_cmd
+      ->add_option("--target", cal.targets,
+                   "metric=value: a dotted path in summary.json and its measured value "
+                   "(repeatable)")
+      ->required();
+  cal_cmd->add_option("--set", cal.sets, "override a scenario value: key=value (repeatable)");
+  cal_cmd->add_option("--out,-o", cal.out, "output folder (default: runs/calibrate-<scenario>)");
+  cal_cmd->add_option("--threads,-j", cal.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  cal_cmd->add_flag("--force", cal.force, "write into an existing output folder");
+  cal_cmd->add_flag("--quiet,-q", cal.quiet, "no progress on stderr");
 
   try {
     cli.parse(argc, argv);
@@ -44,6 +63,7 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return run_command(run);
     if (val_cmd->parsed()) return validate_command(val);
     if (list_cmd->parsed()) return list_command();
+    if (cal_cmd->parsed()) return calibrate_command(cal);
   } catch (const talus::InputError& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 2;
