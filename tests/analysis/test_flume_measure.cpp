@@ -70,6 +70,8 @@ TEST(FlumeMeasure, ProfileThicknessIsTheTopOfTheHighestGrain) {
     if (b.s_low < 0.505 && 0.505 < b.s_high) {
       EXPECT_EQ(b.count, 5);
       EXPECT_NEAR(b.thickness, 10 * r, 1e-12);  // five diameters
+      const Vec2 top = kA.point_at(0.505) + 10 * r * bed_normal(kA, 0.505);
+      EXPECT_NEAR((b.surface - top).norm(), 0.0, 1e-12);
     } else {
       EXPECT_EQ(b.count, 1);
       EXPECT_NEAR(b.thickness, 2 * r, 1e-12);

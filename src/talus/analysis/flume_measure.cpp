@@ -51,14 +51,20 @@ std::vector<ProfileBin> deposit_profile(const geometry::FlumeGeometry& g, const 
     const double s = g.path_coordinate(grains.x[i]);
     const auto k = static_cast<std::size_t>(
         std::clamp(std::floor((s - s0) / bin), 0.0, static_cast<double>(n - 1)));
-    const double top = (grains.x[i] - g.point_at(s)).dot(bed_normal(g, s)) + grains.r[i];
+    const Vec2 n = bed_normal(g, s);
+    const double top = (grains.x[i] - g.point_at(s)).dot(n) + grains.r[i];
     ProfileBin& b = profile[k];
     ++b.count;
-    b.thickness = std::max(b.thickness, top);
+    if (top > b.thickness) {
+      b.thickness = top;
+      // The top grain's own top, not bed + thickness * normal at the bin
+      // centre: over the arc a deposit thicker than R would put that point
+      // past the centre of curvature, where the normals cross.
+      b.surface = grains.x[i] + grains.r[i] * n;
+    }
   }
   for (ProfileBin& b : profile) {
-    const double mid = 0.5 * (b.s_low + b.s_high);
-    b.surface = g.point_at(mid) + b.thickness * bed_normal(g, mid);
+    if (b.count == 0) b.surface = g.point_at(0.5 * (b.s_low + b.s_high));
   }
   return profile;
 }

@@ -37,12 +37,12 @@ FrontSample measure_front(const geometry::FlumeGeometry& g, const Grains& grains
 
 // The deposit surface along the path in bins of `bin` metres: for each bin the
 // thickness normal to the path (from the bed to the top of the highest grain)
-// and the point of the surface.
+// and the surface point, the top of that grain.
 struct ProfileBin {
   double s_low = 0.0, s_high = 0.0;  // path coordinates of the bin's ends
   int count = 0;                     // grains whose centre projects into the bin
   double thickness = 0.0;            // m, 0 when empty
-  Vec2 surface = Vec2::Zero();       // bed point + thickness * normal at the bin centre
+  Vec2 surface = Vec2::Zero();       // top of the top grain (bed point at the centre if empty)
 };
 
 std::vector<ProfileBin> deposit_profile(const geometry::FlumeGeometry& g, const Grains& grains,
