@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
-# make demo: runs the bundled flagship scenario on its defaults and shows where
-# the results and plots are. (The column collapse until the flume scenario lands.)
+# make demo: runs the flagship scenario (the Mancarella & Hungr flume, geometry
+# A, Kuen's Model 3) on its defaults and shows where the results and plots are.
 set -euo pipefail
 build=${1:-build}
 root=$(cd "$(dirname "$0")/.." && pwd)
-out=$root/runs/demo-column_collapse
-echo "talus demo: 3D column collapse (8000 spheres, 0.3 s) -> $out"
+out=$root/runs/demo-flume_A_model3
+echo "talus demo: flume geometry A, Kuen Model 3 (9099 disks, 3 s of flow) -> $out"
 # The demo owns this folder: it is replaced on every `make demo`.
-"$root/$build/talus" run "$root/scenarios/column_collapse.toml" --out "$out" --force --threads "$(nproc)"
+"$root/$build/talus" run "$root/scenarios/flume_A_model3.toml" --out "$out" --force --threads "$(nproc)"
 echo
-echo "results:   $out/summary.json, $out/series.csv"
-echo "ParaView:  $out/particles.pvd and $out/walls.pvd"
+echo "results:   $out/summary.json (\"flume\": arrival, run-up, deposit tail, wall forces)"
+echo "           $out/flume/front.csv, $out/flume/deposit_profile.csv, $out/series.csv"
+echo "ParaView:  $out/particles.pvd (field \"layer\") and $out/walls.pvd"
 echo "plots:"
+/usr/bin/python3 "$root/plots/plot_flume.py" "$out" | sed 's/^/  /'
 /usr/bin/python3 "$root/plots/plot_run.py" "$out" | sed 's/^/  /'
