@@ -10,6 +10,20 @@ namespace {
 
 const std::string kData = std::string(TALUS_TEST_DATA) + "/scenarios/";
 
+// A 2D scenario with one material and nothing else: each case adds a [flume].
+const std::string kHead = R"(method = "dem"
+[run]
+dimension = 2
+duration = 1
+[contact]
+model = "linear"
+[[materials]]
+name = "m"
+density = 2000
+normal_stiffness = 1e6
+friction = 0.3
+)";
+
 dem::DemScenario parse_text(const std::string& text) {
   return parse_dem_scenario(load_scenario_text(text, "flume.toml"));
 }
@@ -59,18 +73,7 @@ TEST(ScenarioFlume, GeometryBWallsMatchTable2AndTheGateIsLifted) {
 }
 
 TEST(ScenarioFlume, DeletedGateByDefaultAndNoParticlesTableNeeded) {
-  std::string text = R"(method = "dem"
-[run]
-dimension = 2
-duration = 1
-[contact]
-model = "linear"
-[[materials]]
-name = "m"
-density = 2000
-normal_stiffness = 1e6
-friction = 0.3
-[flume]
+  const std::string text = kHead + R"([flume]
 beta = 33
 arc_radius = 0.1
 wall_material = "m"
@@ -97,38 +100,27 @@ void expect_error(const std::string& text, const std::string& fragment) {
 }
 
 TEST(ScenarioFlume, BadFlumesAreRefusedWithFileLineAndKey) {
-  const std::string head = R"(method = "dem"
-[run]
-dimension = 2
-duration = 1
-[contact]
-model = "linear"
-[[materials]]
-name = "m"
-density = 2000
-normal_stiffness = 1e6
-friction = 0.3
-)";
-  expect_error(head + "[flume]\nbeta = 95\narc_radius = 0.1\nwall_material = \"m\"\n", "beta");
-  expect_error(head + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"steel\"\n",
+  expect_error(kHead + "[flume]\nbeta = 95\narc_radius = 0.1\nwall_material = \"m\"\n", "beta");
+  expect_error(kHead + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"steel\"\n",
                "wall_material");
   expect_error(
-      head + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\ngate = \"up\"\n",
+      kHead + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\ngate = \"up\"\n",
       "gate");
-  expect_error(head + "[flume]\nbeta = 33\nwall_material = \"m\"\n", "arc_radius");
-  expect_error(head + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\nbarier = 1\n",
+  expect_error(kHead + "[flume]\nbeta = 33\nwall_material = \"m\"\n", "arc_radius");
+  expect_error(kHead + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\nbarier = 1\n",
                "barier");
   // A wall of the user's may not take a generated wall's name.
-  expect_error(head +
+  expect_error(kHead +
                    "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\n"
                    "[flume.release]\nmaterial = \"m\"\n"
                    "[[walls]]\nname = \"gate\"\ntype = \"segment\"\nmaterial = \"m\"\n"
                    "a = [0, 0]\nb = [1, 0]\n",
                "used twice");
   // Without [flume.release] the particles must come from [[particles]].
-  expect_error(head + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\n", "particles");
+  expect_error(kHead + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\n",
+               "particles");
   // The flume is 2D.
-  std::string three_d = head;
+  std::string three_d = kHead;
   three_d.replace(three_d.find("dimension = 2"), 13, "dimension = 3");
   expect_error(three_d + "[flume]\nbeta = 33\narc_radius = 0.1\nwall_material = \"m\"\n", "2D");
 }
