@@ -8,7 +8,6 @@ Usage: plot_flume.py RUN_DIR   (writes RUN_DIR/plots/flume_*.png and prints thei
   flume_forces.png     mean force on chute, arc and barrier (x and y) versus time
 Uses Debian's matplotlib; run with /usr/bin/python3.
 """
-import csv
 import glob
 import json
 import math
@@ -16,17 +15,11 @@ import os
 import sys
 
 import matplotlib
+from talus_csv import read_columns
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import EllipseCollection  # noqa: E402
-
-
-def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header, data = rows[0], [list(map(float, r)) for r in rows[1:] if r]
-    return {name: [r[k] for r in data] for k, name in enumerate(header)}
 
 
 def draw_bed(ax, path):
@@ -56,7 +49,7 @@ def snapshots(run, path, layers, out):
     for ax, name in zip(axes.flat, frames):
         t = float(os.path.basename(name)[2:-4])
         draw_bed(ax, path)
-        draw_grains(ax, read_csv(name), layers)
+        draw_grains(ax, read_columns(name), layers)
         ax.set_aspect("equal")
         ax.set_xlim(min(path["x"]) - 0.02, max(path["x"]) + 0.02)
         ax.set_ylim(min(path["y"]) - 0.05, max(path["y"]) + 0.05)
@@ -87,11 +80,11 @@ def front_plot(front, summary, out):
 
 
 def deposit_plot(run, path, summary, layers, out):
-    profile = read_csv(os.path.join(run, "flume", "deposit_profile.csv"))
+    profile = read_columns(os.path.join(run, "flume", "deposit_profile.csv"))
     fig, ax = plt.subplots(figsize=(9, 4))
     frames = sorted(glob.glob(os.path.join(run, "flume", "frames", "t_*.csv")))
     if frames:
-        draw_grains(ax, read_csv(frames[-1]), layers)
+        draw_grains(ax, read_columns(frames[-1]), layers)
     draw_bed(ax, path)
     xs = [x for x, c in zip(profile["surface_x"], profile["count"]) if c > 0]
     ys = [y for y, c in zip(profile["surface_y"], profile["count"]) if c > 0]
@@ -141,9 +134,9 @@ def main():
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(run, "summary.json")) as f:
         summary = json.load(f)["flume"]
-    layers = int(max(read_csv(os.path.join(run, "flume", "layers.csv"))["layer"]) + 1)
-    path = read_csv(os.path.join(run, "flume", "path.csv"))
-    front = read_csv(os.path.join(run, "flume", "front.csv"))
+    layers = int(max(read_columns(os.path.join(run, "flume", "layers.csv"))["layer"]) + 1)
+    path = read_columns(os.path.join(run, "flume", "path.csv"))
+    front = read_columns(os.path.join(run, "flume", "front.csv"))
     for name in (snapshots(run, path, layers, out), front_plot(front, summary, out),
                  deposit_plot(run, path, summary, layers, out), forces_plot(front, summary, out)):
         if name:

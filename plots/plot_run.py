@@ -4,26 +4,19 @@
 Usage: plot_run.py RUN_DIR   (writes RUN_DIR/plots/*.png and prints their paths)
 Uses Debian's matplotlib; run with /usr/bin/python3.
 """
-import csv
 import os
 import sys
 
 import matplotlib
+from talus_csv import read_columns
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def read_series(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header, data = rows[0], [list(map(float, r)) for r in rows[1:] if r]
-    return {name: [r[k] for r in data] for k, name in enumerate(header)}
-
-
 def main():
     run = sys.argv[1]
-    s = read_series(os.path.join(run, "series.csv"))
+    s = read_columns(os.path.join(run, "series.csv"))
     out = os.path.join(run, "plots")
     os.makedirs(out, exist_ok=True)
     t = s["time"]
