@@ -20,7 +20,7 @@ Grid<D>::Grid(const Vec& lo_, const Vec& hi_, double h_, const std::array<Bounda
   velocity.assign(nodes(), Vec::Zero());
   velocity_old.assign(nodes(), Vec::Zero());
 
-  // Nodes on a face and the ghost nodes beyond it take the face's constraint.
+  // Nodes on a face take the face's constraint; ghost nodes beyond it mirror.
   std::array<int, D> i{};
   for (std::int64_t a = 0; a < nodes(); ++a) {
     std::int64_t rest = a;
@@ -31,14 +31,34 @@ Grid<D>::Grid(const Vec& lo_, const Vec& hi_, double h_, const std::array<Bounda
     unsigned mask = 0;
     for (int d = 0; d < D; ++d) {
       for (int side = 0; side < 2; ++side) {
-        const bool beyond = side == 0 ? i[d] <= kPad : i[d] >= n[d] - 1 - kPad;
-        if (!beyond) continue;
+        const bool on = side == 0 ? i[d] == kPad : i[d] == n[d] - 1 - kPad;
+        if (!on) continue;
         const BoundaryKind k = faces[2 * d + side];
         if (k == BoundaryKind::Fixed) mask |= (1u << D) - 1u;
         if (k == BoundaryKind::Roller) mask |= 1u << d;
       }
     }
     if (mask) constrained.emplace_back(a, mask);
+  }
+  for (int d = 0; d < D; ++d) {
+    for (int side = 0; side < 2; ++side) {
+      const BoundaryKind k = faces[2 * d + side];
+      if (k == BoundaryKind::Free) continue;
+      Vec sign = Vec::Constant(k == BoundaryKind::Fixed ? -1.0 : 1.0);
+      sign[d] = -1.0;
+      const int wall = side == 0 ? kPad : n[d] - 1 - kPad;
+      for (std::int64_t a = 0; a < nodes(); ++a) {
+        std::int64_t rest = a;
+        for (int e = 0; e < D; ++e) {
+          i[e] = static_cast<int>(rest % n[e]);
+          rest /= n[e];
+        }
+        if (side == 0 ? i[d] >= wall : i[d] <= wall) continue;
+        std::array<int, D> m = i;
+        m[d] = 2 * wall - i[d];
+        ghosts.push_back({a, index(m), sign});
+      }
+    }
   }
 }
 
@@ -75,6 +95,16 @@ void Grid<D>::constrain(std::vector<Vec>& field) const {
   for (const auto& [a, mask] : constrained)
     for (int d = 0; d < D; ++d)
       if (mask & (1u << d)) field[a][d] = 0.0;
+  for (const auto& g : ghosts) field[g.ghost] = g.sign.cwiseProduct(field[g.mirror]);
+}
+
+template <int D>
+void Grid<D>::fold(std::vector<double>& m, std::vector<Vec>& momentum, std::vector<Vec>* f) const {
+  for (const auto& g : ghosts) {
+    m[g.mirror] += m[g.ghost];
+    momentum[g.mirror] += g.sign.cwiseProduct(momentum[g.ghost]);
+    if (f) (*f)[g.mirror] += g.sign.cwiseProduct((*f)[g.ghost]);
+  }
 }
 
 template struct Grid<2>;

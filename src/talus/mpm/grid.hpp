@@ -34,9 +34,22 @@ struct Grid {
   std::vector<double> mass;
   std::vector<Vec> momentum, force, velocity, velocity_old;
 
-  // Nodes on or beyond a constrained face with the components they lose
-  // (bit d set: component d is zeroed).
+  // Nodes on a constrained face with the components they lose (bit d set:
+  // component d is zeroed).
   std::vector<std::pair<std::int64_t, unsigned>> constrained;
+  // Ghost nodes beyond a constrained face and their mirror images inside,
+  // ordered by axis. A wall is a plane of symmetry: the velocity field beyond
+  // it is the reflection of the one inside, odd in the components the wall
+  // stops (all for "fixed", the normal one for "roller"). What the particles
+  // put on a ghost node belongs to its mirror node (their mirror images would
+  // put it there), so it is folded in before the update and the ghost takes
+  // the reflected velocity after it. Only the wide stencils (B-spline) reach
+  // ghost nodes; without this they pin the particles near a wall.
+  struct GhostPair {
+    std::int64_t ghost, mirror;
+    Vec sign;  // -1 for the components the wall stops, +1 for the others
+  };
+  std::vector<GhostPair> ghosts;
 
   Grid() = default;
   // The domain is extended to a whole number of cells of size h.
@@ -47,8 +60,11 @@ struct Grid {
   Vec node_position(const std::array<int, D>& i) const;
   // Zeroes mass, momentum and force.
   void clear();
-  // Applies the face constraints to a node field (velocities).
+  // Applies the face constraints to a node velocity field: zeroes the stopped
+  // components on the faces and reflects the field onto the ghost nodes.
   void constrain(std::vector<Vec>& field) const;
+  // Adds what the particles put on ghost nodes to the mirror nodes.
+  void fold(std::vector<double>& m, std::vector<Vec>& momentum, std::vector<Vec>* force) const;
 };
 
 // Weights and gradients of one particle on the nodes of its stencil.

@@ -136,6 +136,7 @@ void Solver<D>::step_with(double dt) {
 
   // 1. particles -> grid
   to_grid<Shape>(true);
+  grid.fold(grid.mass, grid.momentum, &grid.force);
 
   // 2. grid momentum update with Cundall's local damping, then the constraints
 #pragma omp parallel for schedule(static)
@@ -182,6 +183,7 @@ void Solver<D>::step_with(double dt) {
   if (!usl) {
     // 4. MUSL: the new particle momenta back to the grid, then the gradient
     to_grid<Shape>(false);
+    grid.fold(grid.mass, grid.momentum, nullptr);
 #pragma omp parallel for schedule(static)
     for (std::int64_t a = 0; a < nodes; ++a)
       grid.velocity_old[a] =
