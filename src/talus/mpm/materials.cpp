@@ -31,7 +31,10 @@ void LinearElastic::update(MaterialState& s, const Mat3& l, double dt, double) c
 double LinearElastic::wave_speed() const { return std::sqrt(k.p_modulus() / density); }
 
 void NeoHookean::update(MaterialState& s, const Mat3& l, double dt, double) const {
-  s.deformation = (Mat3::Identity() + l * dt) * s.deformation;
+  // Cayley (midpoint) update of F: exactly orthogonal for a pure spin, so a
+  // rigid rotation leaves J and the invariants of the stress unchanged.
+  const Mat3 i = Mat3::Identity();
+  s.deformation = (i - 0.5 * dt * l).inverse() * (i + 0.5 * dt * l) * s.deformation;
   const double j = s.deformation.determinant();
   const double mu = k.shear, lambda = k.bulk - 2.0 / 3.0 * k.shear;
   const Mat3 b = s.deformation * s.deformation.transpose();
