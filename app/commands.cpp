@@ -18,6 +18,9 @@
 #include "talus/dem/driver.hpp"
 #include "talus/dem/output_observer.hpp"
 #include "talus/io/scenario.hpp"
+#include "talus/io/scenario_mpm.hpp"
+#include "talus/mpm/scenario.hpp"
+#include "talus/mpm/output_observer.hpp"
 
 namespace fs = std::filesystem;
 
@@ -86,6 +89,55 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   return 0;
 }
 
+// --- MPM ---
+template <int D>
+int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunOptions& opt) {
+  const auto t_setup = std::chrono::steady_clock::now();
+  auto solver = mpm::build_mpm<D>(sc);
+  const double setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_setup).count();
+  std::vector<double> c0;
+  for (const auto& m : sc.materials) c0.push_back(mpm::initial_cohesion(m));
+  mpm::MpmOutputs<D> outputs(out, c0);
+  if (!opt.quiet && isatty(STDERR_FILENO))
+    outputs.progress = [&solver](double t, double e, double sps) {
+      progress_line(t, e, sps, solver.last_dt > 0 ? solver.last_dt : 1.0);
+    };
+  mpm::MpmRunControl control;
+  control.duration = sc.duration;
+  control.series_interval = sc.output.series_interval > 0 ? sc.output.series_interval
+                                                          : sc.duration / 200.0;
+  control.snapshot_interval = sc.output.snapshots ? sc.output.snapshot_interval : -1.0;
+  RunSummary summary;
+  summary.output = out;
+  summary.setup_seconds = setup_s;
+  try {
+    const auto stats = mpm::run_mpm<D>(solver, control, {&outputs});
+    summary.steps = stats.steps;
+    summary.loop_seconds = stats.wall_seconds;
+    write_mpm_summary<D>(sc, solver, outputs, summary, opt.threads, "completed", "");
+  } catch (const RunError& e) {
+    summary.steps = solver.steps;
+    write_mpm_summary<D>(sc, solver, outputs, summary, opt.threads, "failed", e.what());
+    throw;
+  }
+  if (!opt.quiet)
+    fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", summary.steps,
+               summary.loop_seconds, out.string());
+  return 0;
+}
+
+int run_mpm_command(const io::ScenarioFile& file, const RunOptions& opt) {
+  if (!opt.resume.empty())
+    throw InputError(opt.resume + ": resuming is not available for MPM runs yet");
+  const auto sc = io::parse_mpm_scenario(file);
+  const fs::path out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
+                                       : fs::path(opt.out);
+  prepare_output(out, opt.force);
+  std::ofstream(out / "scenario.toml") << io::mpm_scenario_to_toml(sc);
+  return sc.dimension == 2 ? run_mpm_scenario<2>(sc, out, opt) : run_mpm_scenario<3>(sc, out, opt);
+}
+
 }  // namespace
 
 int run_command(const RunOptions& opt) {
@@ -106,6 +158,7 @@ int run_command(const RunOptions& opt) {
   }
   const auto file =
       io::load_scenario_file(scenario_path, resume ? std::vector<std::string>{} : opt.sets);
+  if (file.method == "mpm") return run_mpm_command(file, opt);
   const auto sc = io::parse_dem_scenario(file);
   if (!resume) {
     out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
@@ -120,6 +173,21 @@ int run_command(const RunOptions& opt) {
 
 int validate_command(const ValidateOptions& opt) {
   const auto file = io::load_scenario_file(opt.file, opt.sets);
+  if (file.method == "mpm") {  // --- MPM ---
+    const auto sc = io::parse_mpm_scenario(file);
+    std::size_t n = 0;
+    double dt = 0;
+    if (sc.dimension == 2) {
+      const auto s = mpm::build_mpm<2>(sc);
+      n = s.particles.size(), dt = s.time_step();
+    } else {
+      const auto s = mpm::build_mpm<3>(sc);
+      n = s.particles.size(), dt = s.time_step();
+    }
+    fmt::print("{}: valid ({}D MPM, {} points, {} materials, first time step {:.3g} s)\n",
+               opt.file, sc.dimension, n, sc.materials.size(), dt);
+    return 0;
+  }
   const auto sc = io::parse_dem_scenario(file);
   // Building places the particles and checks the time step, without settling.
   double dt = 0, crit = 0;

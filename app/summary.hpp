@@ -6,6 +6,8 @@
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/output_observer.hpp"
+#include "talus/mpm/output_observer.hpp"
+#include "talus/mpm/scenario.hpp"
 
 namespace talus::app {
 
@@ -18,6 +20,12 @@ struct RunSummary {
 template <int D>
 void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
                        const dem::DemOutputs<D>& outputs, const RunSummary& summary, int threads,
+                       const std::string& status, const std::string& error);
+
+// --- MPM ---
+template <int D>
+void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& solver,
+                       const mpm::MpmOutputs<D>& outputs, const RunSummary& summary, int threads,
                        const std::string& status, const std::string& error);
 
 }  // namespace talus::app

@@ -127,8 +127,9 @@ ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
   TomlReader root(file.table, path);
   const int method = root.required_enum("method", kMethods);
   file.method = root.required_string("method");
-  if (method != 0) {
-    root.fail("method", fmt::format("method \"{}\" is not implemented yet (available: \"dem\")",
+  if (method == 1) {
+    root.fail("method", fmt::format("method \"{}\" is not implemented yet (available: \"dem\", "
+                                    "\"mpm\")",
                                     file.method));
   }
   return file;
