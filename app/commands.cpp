@@ -23,6 +23,9 @@
 #include "talus/io/scenario_runout.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/output_observer.hpp"
+#include "talus/io/scenario_mpm.hpp"
+#include "talus/mpm/scenario.hpp"
+#include "talus/mpm/output_observer.hpp"
 
 namespace fs = std::filesystem;
 
@@ -147,6 +150,55 @@ int run_runout_scenario(const io::ScenarioFile& file, const RunOptions& opt) {
   return 0;
 }
 
+// --- MPM ---
+template <int D>
+int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunOptions& opt) {
+  const auto t_setup = std::chrono::steady_clock::now();
+  auto solver = mpm::build_mpm<D>(sc);
+  const double setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_setup).count();
+  std::vector<double> c0;
+  for (const auto& m : sc.materials) c0.push_back(mpm::initial_cohesion(m));
+  mpm::MpmOutputs<D> outputs(out, c0);
+  if (!opt.quiet && isatty(STDERR_FILENO))
+    outputs.progress = [&solver](double t, double e, double sps) {
+      progress_line(t, e, sps, solver.last_dt > 0 ? solver.last_dt : 1.0);
+    };
+  mpm::MpmRunControl control;
+  control.duration = sc.duration;
+  control.series_interval = sc.output.series_interval > 0 ? sc.output.series_interval
+                                                          : sc.duration / 200.0;
+  control.snapshot_interval = sc.output.snapshots ? sc.output.snapshot_interval : -1.0;
+  RunSummary summary;
+  summary.output = out;
+  summary.setup_seconds = setup_s;
+  try {
+    const auto stats = mpm::run_mpm<D>(solver, control, {&outputs});
+    summary.steps = stats.steps;
+    summary.loop_seconds = stats.wall_seconds;
+    write_mpm_summary<D>(sc, solver, outputs, summary, opt.threads, "completed", "");
+  } catch (const RunError& e) {
+    summary.steps = solver.steps;
+    write_mpm_summary<D>(sc, solver, outputs, summary, opt.threads, "failed", e.what());
+    throw;
+  }
+  if (!opt.quiet)
+    fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", summary.steps,
+               summary.loop_seconds, out.string());
+  return 0;
+}
+
+int run_mpm_command(const io::ScenarioFile& file, const RunOptions& opt) {
+  if (!opt.resume.empty())
+    throw InputError(opt.resume + ": resuming is not available for MPM runs yet");
+  const auto sc = io::parse_mpm_scenario(file);
+  const fs::path out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
+                                       : fs::path(opt.out);
+  prepare_output(out, opt.force);
+  std::ofstream(out / "scenario.toml") << io::mpm_scenario_to_toml(sc);
+  return sc.dimension == 2 ? run_mpm_scenario<2>(sc, out, opt) : run_mpm_scenario<3>(sc, out, opt);
+}
+
 }  // namespace
 
 int run_command(const RunOptions& opt) {
@@ -171,6 +223,7 @@ int run_command(const RunOptions& opt) {
     if (resume) throw InputError(out.string() + ": runout runs write no checkpoints to resume");
     return run_runout_scenario(file, opt);
   }
+  if (file.method == "mpm") return run_mpm_command(file, opt);
   const auto sc = io::parse_dem_scenario(file);
   if (!resume) {
     out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
@@ -190,6 +243,21 @@ int validate_command(const ValidateOptions& opt) {
     const auto setup = runout::build_dan(rsc);
     fmt::print("{}: valid (1D DAN runout, {} boundary blocks, {:.4g} m^3 released)\n", opt.file,
                setup.model.size(), setup.model.total_mass() / rsc.params.density);
+    return 0;
+  }
+  if (file.method == "mpm") {  // --- MPM ---
+    const auto sc = io::parse_mpm_scenario(file);
+    std::size_t n = 0;
+    double dt = 0;
+    if (sc.dimension == 2) {
+      const auto s = mpm::build_mpm<2>(sc);
+      n = s.particles.size(), dt = s.time_step();
+    } else {
+      const auto s = mpm::build_mpm<3>(sc);
+      n = s.particles.size(), dt = s.time_step();
+    }
+    fmt::print("{}: valid ({}D MPM, {} points, {} materials, first time step {:.3g} s)\n",
+               opt.file, sc.dimension, n, sc.materials.size(), dt);
     return 0;
   }
   const auto sc = io::parse_dem_scenario(file);

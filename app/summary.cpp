@@ -6,6 +6,7 @@
 #include "talus/core/version.hpp"
 #include "talus/io/scenario.hpp"
 #include "talus/io/scenario_runout.hpp"
+#include "talus/io/scenario_mpm.hpp"
 
 namespace talus::app {
 
@@ -121,5 +122,64 @@ void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanMod
   std::ofstream(tmp) << j.dump(2) << "\n";
   std::filesystem::rename(tmp, summary.output / "summary.json");
 }
+
+// --- MPM ---
+template <int D>
+void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& s,
+                       const mpm::MpmOutputs<D>& outputs, const RunSummary& summary, int threads,
+                       const std::string& status, const std::string& error) {
+  using nlohmann::json;
+  const auto& p = s.particles;
+  int yielding = 0, cracked = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    yielding += p.state[i].yielding;
+    const double c0 = mpm::initial_cohesion(sc.materials[p.material[i]]);
+    cracked += c0 > 0.0 && p.state[i].cohesion < c0;
+  }
+  const double front = mpm::front_x(p), height = mpm::top(p, s.gravity());
+  json j = {
+      {"talus_version", talus::version()},
+      {"status", status},
+      {"method", "mpm"},
+      {"dimension", D},
+      {"scenario", io::mpm_scenario_to_json(sc)},
+      {"resolved",
+       {{"last_time_step_s", s.last_dt},
+        {"cell_size_m", s.grid.h},
+        {"gimp_half_width_over_h", s.params.gimp_half_width},
+        {"grid_nodes", s.grid.nodes()},
+        {"threads", threads}}},
+      {"run",
+       {{"steps", summary.steps},
+        {"simulated_time_s", s.time},
+        {"loop_wall_s", summary.loop_seconds},
+        {"setup_wall_s", summary.setup_seconds},
+        {"point_steps_per_s",
+         summary.loop_seconds > 0 ? p.size() * summary.steps / summary.loop_seconds : 0.0}}},
+      {"metrics",
+       {{"points", p.size()},
+        {"kinetic_energy_J", mpm::kinetic_energy(p)},
+        {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
+        {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
+        {"front_x_m", front},
+        {"front_advance_m", front - outputs.initial_front_x},
+        {"top_m", height},
+        {"top_change_m", height - outputs.initial_top},
+        {"yielding_points", yielding},
+        {"cracked_points", cracked}}},
+  };
+  if (!error.empty()) j["error"] = error;
+  const auto path = summary.output / "summary.json";
+  const auto tmp = summary.output / "summary.json.tmp";
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  std::filesystem::rename(tmp, path);
+}
+
+template void write_mpm_summary<2>(const mpm::MpmScenario&, const mpm::Solver<2>&,
+                                   const mpm::MpmOutputs<2>&, const RunSummary&, int,
+                                   const std::string&, const std::string&);
+template void write_mpm_summary<3>(const mpm::MpmScenario&, const mpm::Solver<3>&,
+                                   const mpm::MpmOutputs<3>&, const RunSummary&, int,
+                                   const std::string&, const std::string&);
 
 }  // namespace talus::app

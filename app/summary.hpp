@@ -9,6 +9,8 @@
 #include "talus/dem/output_observer.hpp"
 #include "talus/runout/results.hpp"
 #include "talus/runout/scenario.hpp"
+#include "talus/mpm/output_observer.hpp"
+#include "talus/mpm/scenario.hpp"
 
 namespace talus::app {
 
@@ -28,5 +30,10 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
 void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanModel& model,
                           const runout::RunoutResults& results, const RunSummary& summary,
                           const std::string& status, const std::string& error);
+// --- MPM ---
+template <int D>
+void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& solver,
+                       const mpm::MpmOutputs<D>& outputs, const RunSummary& summary, int threads,
+                       const std::string& status, const std::string& error);
 
 }  // namespace talus::app

@@ -166,8 +166,6 @@ INSTANTIATE_TEST_SUITE_P(
                 edit(edit(kBase3d, "duration = 0.1\n", ""), "[run]", "[run] # <-"), "duration",
                 "[run] 'duration': missing (expected a positive number)"},
         BadCase{"missing_method", edit(kBase3d, "method = \"dem\"\n", ""), "method", "missing"},
-        BadCase{"future_method", edit(kBase3d, "method = \"dem\"", "method = \"mpm\" # <-"),
-                "method", "not implemented yet"},
         BadCase{"unknown_method", edit(kBase3d, "method = \"dem\"", "method = \"sph\" # <-"),
                 "method", "expected one of \"dem\", \"runout\" or \"mpm\", got \"sph\""},
         BadCase{"syntax_error", edit(kBase3d, "duration = 0.1", "duration = 0.1 0.2 # <-"), "",

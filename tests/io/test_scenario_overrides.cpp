@@ -119,7 +119,7 @@ TEST(Overrides, MalformedOverridesNameTheFileAndTheOverride) {
 }
 
 TEST(Overrides, MethodCanBeOverriddenAndIsChecked) {
-  EXPECT_THROW(load_scenario_file(kFull2d, {"method=mpm"}), InputError);
+  EXPECT_THROW(load_scenario_file(kFull2d, {"method=sph"}), InputError);
   EXPECT_EQ(load_scenario_file(kFull2d, {"method=dem"}).method, "dem");
 }
 

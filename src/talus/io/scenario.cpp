@@ -175,13 +175,8 @@ ScenarioFile load_scenario_text(std::string_view text, const std::string& path,
     throw InputError(fmt::format("{}: {}", path, e.what()));
   }
   TomlReader root(file.table, path);
-  const int method = root.required_enum("method", kMethods);
+  root.required_enum("method", kMethods);
   file.method = root.required_string("method");
-  if (method == 2) {
-    root.fail("method", fmt::format("method \"{}\" is not implemented yet (available: \"dem\", "
-                                    "\"runout\")",
-                                    file.method));
-  }
   return file;
 }
 

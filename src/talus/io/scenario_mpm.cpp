@@ -1,0 +1,246 @@
+// Reading and writing MPM scenarios.
+#include "talus/io/scenario_mpm.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "talus/core/error.hpp"
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io {
+namespace {
+
+using detail::between;
+using detail::DemContext;
+using detail::non_negative;
+using detail::number_in;
+using detail::positive;
+using detail::required_number_in;
+using mpm::BoundaryKind;
+using mpm::MaterialModel;
+
+const EnumNames<mpm::ShapeKind> kShapes = {{"gimp", mpm::ShapeKind::Gimp},
+                                           {"linear", mpm::ShapeKind::Linear},
+                                           {"cubic_bspline", mpm::ShapeKind::CubicBSpline}};
+const EnumNames<mpm::Scheme> kSchemes = {{"musl", mpm::Scheme::Musl}, {"usl", mpm::Scheme::Usl}};
+const EnumNames<BoundaryKind> kFaces = {
+    {"roller", BoundaryKind::Roller}, {"fixed", BoundaryKind::Fixed}, {"free", BoundaryKind::Free}};
+const EnumNames<MaterialModel> kModels = {{"mohr_coulomb", MaterialModel::MohrCoulomb},
+                                          {"drucker_prager", MaterialModel::DruckerPrager},
+                                          {"linear_elastic", MaterialModel::LinearElastic},
+                                          {"neo_hookean", MaterialModel::NeoHookean},
+                                          {"newtonian_fluid", MaterialModel::NewtonianFluid}};
+const EnumNames<int> kInitialStress = {{"none", 0}, {"geostatic", 1}};
+const char* kFaceKeys[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+
+void read_run(TomlReader& r, mpm::MpmScenario& s, DemContext& ctx) {
+  const auto dimension = r.required_integer("dimension");
+  r.expect(dimension == 2 || dimension == 3, "dimension", "2 or 3");
+  s.dimension = ctx.dimension = static_cast<int>(dimension);
+  s.duration = required_number_in(r, "duration", positive());
+  auto& p = s.solver;
+  if (r.is_string("time_step")) {
+    r.required_enum<int>("time_step", {{"auto", 0}});
+  } else {
+    p.fixed_time_step = number_in(r, "time_step", 0.0, positive());
+  }
+  p.cfl = number_in(r, "cfl", p.cfl, between(0.0, 1.0, true, false));
+  const Vec3 down = ctx.dimension == 2 ? Vec3(0.0, -9.81, 0.0) : Vec3(0.0, 0.0, -9.81);
+  p.gravity = detail::point_or(r, "gravity", ctx, down);
+  p.shape = r.enumeration("shape", kShapes, p.shape);
+  p.scheme = r.enumeration("scheme", kSchemes, p.scheme);
+  p.flip = number_in(r, "flip", p.flip, between(0.0, 1.0, false, false));
+  p.local_damping = number_in(r, "local_damping", p.local_damping, between(0.0, 1.0, false, true));
+  r.finish();
+}
+
+void read_grid(TomlReader& r, mpm::MpmScenario& s, const DemContext& ctx) {
+  s.grid.lo = detail::required_point(r, "min", ctx);
+  s.grid.hi = detail::required_point(r, "max", ctx);
+  for (int d = 0; d < ctx.dimension; ++d)
+    if (!(s.grid.hi[d] > s.grid.lo[d])) r.fail("max", "expected every coordinate above min's");
+  s.grid.cell_size = required_number_in(r, "cell_size", positive());
+  s.grid.faces.fill(BoundaryKind::Roller);
+  if (auto b = r.optional_table("boundaries")) {
+    for (int f = 0; f < 2 * ctx.dimension; ++f)
+      s.grid.faces[f] = b->enumeration(kFaceKeys[f], kFaces, BoundaryKind::Roller);
+    b->finish();
+  }
+  r.finish();
+}
+
+mpm::MaterialParams read_material(TomlReader& r) {
+  mpm::MaterialParams m;
+  m.name = r.required_string("name");
+  m.model = r.required_enum("model", kModels);
+  m.density = required_number_in(r, "density", positive());
+  const bool fluid = m.model == MaterialModel::NewtonianFluid;
+  const bool frictional =
+      m.model == MaterialModel::MohrCoulomb || m.model == MaterialModel::DruckerPrager;
+  const std::string model = r.required_string("model");
+  if (fluid) {
+    m.bulk_modulus = required_number_in(r, "bulk_modulus", positive());
+    m.viscosity = number_in(r, "viscosity", 0.0, non_negative());
+    r.reject({"youngs_modulus", "poisson_ratio"}, "is not used by model '" + model + "'");
+  } else {
+    m.youngs_modulus = required_number_in(r, "youngs_modulus", positive());
+    m.poisson_ratio = required_number_in(r, "poisson_ratio", between(-1.0, 0.5, true, true));
+    r.reject({"bulk_modulus", "viscosity"}, "is not used by model '" + model + "'");
+  }
+  if (frictional) {
+    m.friction_angle = r.required_angle("friction_angle");
+    r.expect(m.friction_angle >= 0.0 && m.friction_angle < M_PI / 2, "friction_angle",
+             "an angle in [0, 90) degrees");
+    m.dilatancy_angle = r.angle("dilatancy_angle", 0.0);
+    r.expect(m.dilatancy_angle >= 0.0 && m.dilatancy_angle <= m.friction_angle, "dilatancy_angle",
+             "an angle in [0, friction_angle] degrees");
+    m.cohesion = number_in(r, "cohesion", 0.0, non_negative());
+    m.critical_volume_strain = number_in(r, "critical_volume_strain", 0.0, non_negative());
+    if (m.model == MaterialModel::DruckerPrager)
+      m.tension_cutoff = number_in(r, "tension_cutoff", m.tension_cutoff, non_negative());
+    else
+      r.reject({"tension_cutoff"}, "is not used by model 'mohr_coulomb' (its apex is the cut-off)");
+    if (m.friction_angle == 0.0 && m.model == MaterialModel::DruckerPrager && m.cohesion == 0.0)
+      r.fail("cohesion", "a Drucker-Prager material needs friction_angle > 0 or cohesion > 0");
+  } else {
+    r.reject({"friction_angle", "dilatancy_angle", "cohesion", "critical_volume_strain",
+              "tension_cutoff"},
+             "is not used by model '" + model + "'");
+  }
+  r.finish();
+  return m;
+}
+
+mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx) {
+  mpm::BodyParams b;
+  b.material = r.required_string("material");
+  bool found = false;
+  for (std::size_t i = 0; i < s.materials.size(); ++i)
+    if (s.materials[i].name == b.material) b.material_index = static_cast<int>(i), found = true;
+  if (!found) detail::check_material(r, "material", b.material, ctx);
+  detail::read_box(r, "box", ctx, b.min, b.max);
+  const auto per_cell = r.integer("points_per_cell", b.per_cell);
+  r.expect(per_cell >= 1 && per_cell <= 8, "points_per_cell", "an integer in [1, 8]");
+  b.per_cell = static_cast<int>(per_cell);
+  b.velocity = detail::point_or(r, "velocity", ctx, Vec3::Zero());
+  b.geostatic = r.enumeration("initial_stress", kInitialStress, 0) == 1;
+  if (b.geostatic) {
+    b.k0 = number_in(r, "k0", 0.0, positive());
+  } else {
+    r.reject({"k0"}, "is only used with initial_stress = \"geostatic\"");
+  }
+  for (int d = 0; d < ctx.dimension; ++d)
+    if (b.min[d] < s.grid.lo[d] || b.max[d] > s.grid.hi[d])
+      r.fail("box", "expected a box inside the [grid] (min to max)");
+  r.finish();
+  return b;
+}
+
+}  // namespace
+
+mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
+  TomlReader root(file.table, file.path);
+  for (std::string_view key :
+       {"method", "name", "description", "run", "grid", "materials", "bodies", "output"})
+    root.mark_read(key);
+  root.finish();
+  mpm::MpmScenario s;
+  if (root.required_string("method") != "mpm") root.expect(false, "method", "\"mpm\"");
+  s.name = root.string("name", std::filesystem::path(file.path).stem().string());
+  s.description = root.string("description", "");
+  DemContext ctx;
+  ctx.folder = std::filesystem::path(file.path).parent_path();
+  TomlReader run = root.required_table("run");
+  read_run(run, s, ctx);
+  TomlReader grid = root.required_table("grid");
+  read_grid(grid, s, ctx);
+  std::vector<TomlReader> materials = root.tables("materials");
+  if (materials.empty()) root.fail("materials", "missing: at least one [[materials]] table");
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    s.materials.push_back(read_material(materials[i]));
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.materials[j].name == s.materials[i].name)
+        materials[i].fail("name", fmt::format("material '{}' is defined twice (first at line {})",
+                                              s.materials[i].name, materials[j].line()));
+    ctx.material_names.push_back(s.materials[i].name);
+  }
+  std::vector<TomlReader> bodies = root.tables("bodies");
+  if (bodies.empty()) root.fail("bodies", "missing: at least one [[bodies]] table");
+  for (auto& b : bodies) s.bodies.push_back(read_body(b, s, ctx));
+  if (auto out = root.optional_table("output")) {
+    s.output.series_interval = number_in(*out, "series_interval", 0.0, non_negative());
+    s.output.snapshot_interval = number_in(*out, "snapshot_interval", 0.0, non_negative());
+    s.output.snapshots = out->boolean("snapshots", true);
+    out->finish();
+  }
+  root.finish();
+  return s;
+}
+
+nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
+  using J = nlohmann::ordered_json;
+  const int dim = s.dimension;
+  auto point = [dim](const Vec3& v) {
+    J a = J::array();
+    for (int d = 0; d < dim; ++d) a.push_back(v[d]);
+    return a;
+  };
+  const auto& p = s.solver;
+  J run = {{"dimension", dim}, {"duration", s.duration}};
+  run["time_step"] = p.fixed_time_step > 0.0 ? J(p.fixed_time_step) : J("auto");
+  run["cfl"] = p.cfl;
+  run["gravity"] = point(p.gravity);
+  run["shape"] = detail::name_of(kShapes, p.shape);
+  run["scheme"] = detail::name_of(kSchemes, p.scheme);
+  run["flip"] = p.flip;
+  run["local_damping"] = p.local_damping;
+  J faces = J::object();
+  for (int f = 0; f < 2 * dim; ++f) faces[kFaceKeys[f]] = detail::name_of(kFaces, s.grid.faces[f]);
+  J grid = {{"min", point(s.grid.lo)},
+            {"max", point(s.grid.hi)},
+            {"cell_size", s.grid.cell_size},
+            {"boundaries", faces}};
+  J materials = J::array();
+  for (const auto& m : s.materials) {
+    J j = {{"name", m.name}, {"model", detail::name_of(kModels, m.model)}, {"density", m.density}};
+    if (m.model == MaterialModel::NewtonianFluid) {
+      j["bulk_modulus"] = m.bulk_modulus;
+      j["viscosity"] = m.viscosity;
+    } else {
+      j["youngs_modulus"] = m.youngs_modulus;
+      j["poisson_ratio"] = m.poisson_ratio;
+    }
+    if (m.model == MaterialModel::MohrCoulomb || m.model == MaterialModel::DruckerPrager) {
+      j["friction_angle"] = rad2deg(m.friction_angle);
+      j["dilatancy_angle"] = rad2deg(m.dilatancy_angle);
+      j["cohesion"] = m.cohesion;
+      j["critical_volume_strain"] = m.critical_volume_strain;
+      if (m.model == MaterialModel::DruckerPrager && std::isfinite(m.tension_cutoff))
+        j["tension_cutoff"] = m.tension_cutoff;
+    }
+    materials.push_back(j);
+  }
+  J bodies = J::array();
+  for (const auto& b : s.bodies) {
+    J j = {{"material", b.material},
+           {"box", {{"min", point(b.min)}, {"max", point(b.max)}}},
+           {"points_per_cell", b.per_cell},
+           {"velocity", point(b.velocity)},
+           {"initial_stress", b.geostatic ? "geostatic" : "none"}};
+    if (b.geostatic) j["k0"] = mpm::resolved_k0(b, s.materials[b.material_index]);
+    bodies.push_back(j);
+  }
+  J output = {{"series_interval", s.output.series_interval},
+              {"snapshot_interval", s.output.snapshot_interval},
+              {"snapshots", s.output.snapshots}};
+  return J{{"method", "mpm"},  {"name", s.name},  {"description", s.description},
+           {"run", run},       {"grid", grid},    {"materials", materials},
+           {"bodies", bodies}, {"output", output}};
+}
+
+std::string mpm_scenario_to_toml(const mpm::MpmScenario& s) {
+  return detail::json_to_toml(mpm_scenario_to_json(s));
+}
+
+}  // namespace talus::io

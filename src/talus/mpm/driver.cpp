@@ -1,0 +1,79 @@
+#include "talus/mpm/driver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace talus::mpm {
+
+template <int D>
+double front_x(const Particles<D>& p) {
+  double x = -1e300;
+  for (const auto& xi : p.x) x = std::max(x, xi[0]);
+  return x;
+}
+
+template <int D>
+double top(const Particles<D>& p, const typename Space<D>::Vec& gravity) {
+  const double g = gravity.norm();
+  const auto up = g > 0 ? (-gravity / g).eval() : Space<D>::Vec::Unit(D - 1).eval();
+  double t = -1e300;
+  for (const auto& xi : p.x) t = std::max(t, up.dot(xi));
+  return t;
+}
+
+template <int D>
+MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmObserver<D>*>& obs) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  auto last_progress = t0;
+  for (auto* o : obs) o->on_series(s);
+  if (c.snapshot_interval >= 0.0)
+    for (auto* o : obs) o->on_snapshot(s);
+  const std::int64_t start = s.steps;
+  // Next output times are counted in intervals from t = 0, so rounding of the
+  // variable step never accumulates.
+  auto next_after = [&](double interval) {
+    return interval > 0.0 ? (std::floor(s.time / interval + 1e-9) + 1.0) * interval : 0.0;
+  };
+  double next_series = next_after(c.series_interval);
+  double next_snapshot = next_after(c.snapshot_interval);
+  while (s.time < c.duration * (1.0 - 1e-12)) {
+    double dt = s.time_step();
+    // Land exactly on the end time.
+    if (s.time + dt > c.duration) dt = c.duration - s.time;
+    s.step(dt);
+    const bool last = s.time >= c.duration * (1.0 - 1e-12);
+    if (last || s.time >= next_series) {
+      for (auto* o : obs) o->on_series(s);
+      next_series = next_after(c.series_interval);
+    }
+    if (c.snapshot_interval >= 0.0 &&
+        (last || (c.snapshot_interval > 0.0 && s.time >= next_snapshot))) {
+      for (auto* o : obs) o->on_snapshot(s);
+      next_snapshot = next_after(c.snapshot_interval);
+    }
+    const auto now = clock::now();
+    if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_seconds || last) {
+      const double secs = std::chrono::duration<double>(now - t0).count();
+      for (auto* o : obs)
+        o->on_progress(s.time, c.duration, secs > 0 ? (s.steps - start) / secs : 0.0);
+      last_progress = now;
+    }
+  }
+  MpmRunStats st;
+  st.steps = s.steps - start;
+  st.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  return st;
+}
+
+template MpmRunStats run_mpm<2>(Solver<2>&, const MpmRunControl&,
+                                const std::vector<MpmObserver<2>*>&);
+template MpmRunStats run_mpm<3>(Solver<3>&, const MpmRunControl&,
+                                const std::vector<MpmObserver<3>*>&);
+template double front_x<2>(const Particles<2>&);
+template double front_x<3>(const Particles<3>&);
+template double top<2>(const Particles<2>&, const Space<2>::Vec&);
+template double top<3>(const Particles<3>&, const Space<3>::Vec&);
+
+}  // namespace talus::mpm

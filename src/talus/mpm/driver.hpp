@@ -1,0 +1,45 @@
+#pragma once
+// The MPM run loop: advances a solver to the end time with the CFL step and
+// calls the observers (series, snapshots, progress) at their intervals of
+// simulated time. Health checks (non-finite velocities, points leaving the
+// grid) are the solver's and stop the run with a RunError.
+#include <cstdint>
+#include <vector>
+
+#include "talus/mpm/solver.hpp"
+
+namespace talus::mpm {
+
+template <int D>
+class MpmObserver {
+ public:
+  virtual ~MpmObserver() = default;
+  virtual void on_series(const Solver<D>&) {}
+  virtual void on_snapshot(const Solver<D>&) {}
+  virtual void on_progress(double /*time*/, double /*end*/, double /*steps_per_s*/) {}
+};
+
+struct MpmRunControl {
+  double duration = 0.0;
+  double series_interval = 0.0;    // 0: every step
+  double snapshot_interval = 0.0;  // 0: first and last only; < 0: none
+  double progress_seconds = 1.0;
+};
+
+struct MpmRunStats {
+  std::int64_t steps = 0;
+  double wall_seconds = 0.0;
+};
+
+template <int D>
+MpmRunStats run_mpm(Solver<D>& solver, const MpmRunControl& control,
+                    const std::vector<MpmObserver<D>*>& observers);
+
+// Metrics of the point cloud: the furthest point along +x (with half a point
+// spacing added by the caller if wanted) and the highest point along -gravity.
+template <int D>
+double front_x(const Particles<D>& p);
+template <int D>
+double top(const Particles<D>& p, const typename Space<D>::Vec& gravity);
+
+}  // namespace talus::mpm

@@ -1,0 +1,98 @@
+#include "talus/mpm/output_observer.hpp"
+
+#include <cmath>
+
+namespace talus::mpm {
+
+template <int D>
+MpmOutputs<D>::MpmOutputs(std::filesystem::path dir, std::vector<double> c0)
+    : dir_(std::move(dir)), c0_(std::move(c0)) {
+  std::filesystem::create_directories(dir_);
+  series_ = std::make_unique<io::CsvSeries>(
+      dir_ / "series.csv",
+      std::vector<std::string>{"time", "step", "time_step", "points", "kinetic_energy",
+                               "potential_energy", "front_x", "top", "max_speed", "yielding_points",
+                               "cracked_points", "min_c_over_c0"},
+      false);
+  particles_ = std::make_unique<io::PvdSeries>(dir_, "particles", false);
+}
+
+template <int D>
+double MpmOutputs<D>::c_ratio(const Solver<D>& s, std::size_t p) const {
+  const double c0 = c0_[s.particles.material[p]];
+  return c0 > 0.0 ? s.particles.state[p].cohesion / c0 : 1.0;
+}
+
+template <int D>
+void MpmOutputs<D>::on_series(const Solver<D>& s) {
+  const auto& p = s.particles;
+  const double ke = kinetic_energy(p);
+  double max_speed = 0.0, min_ratio = 1.0;
+  int yielding = 0, cracked = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    max_speed = std::max(max_speed, p.v[i].norm());
+    yielding += p.state[i].yielding;
+    const double r = c_ratio(s, i);
+    cracked += r < 1.0;
+    min_ratio = std::min(min_ratio, r);
+  }
+  const double fx = front_x(p), tp = top(p, s.gravity());
+  if (first_) {
+    initial_front_x = fx;
+    initial_top = tp;
+    first_ = false;
+  }
+  if (ke > peak_kinetic_energy) {
+    peak_kinetic_energy = ke;
+    peak_kinetic_energy_time = s.time;
+  }
+  series_->row({s.time, static_cast<double>(s.steps), s.last_dt, static_cast<double>(p.size()), ke,
+                potential_energy(p, s.gravity()), fx, tp, max_speed, static_cast<double>(yielding),
+                static_cast<double>(cracked), min_ratio});
+}
+
+template <int D>
+void MpmOutputs<D>::on_snapshot(const Solver<D>& s) {
+  const auto& p = s.particles;
+  const std::size_t n = p.size();
+  io::ParticleFrame f;
+  std::vector<double> sxx(n), syy(n), szz(n), sxy(n), sxz(n), syz(n), pressure(n), q(n), eps(n),
+      ratio(n), volume(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f.position.push_back(Space<D>::to3(p.x[i]));
+    f.velocity.push_back(Space<D>::to3(p.v[i]));
+    f.angular_velocity.push_back(Vec3::Zero());
+    // Half the point spacing, so that glyphs of this radius tile the body.
+    f.radius.push_back(0.5 * std::pow(p.volume[i], 1.0 / D));
+    f.id.push_back(static_cast<int64_t>(i));
+    f.material.push_back(p.material[i]);
+    f.contacts.push_back(0);
+    const Mat3& st = p.state[i].stress;
+    sxx[i] = st(0, 0), syy[i] = st(1, 1), szz[i] = st(2, 2), sxy[i] = st(0, 1);
+    sxz[i] = st(0, 2), syz[i] = st(1, 2);
+    pressure[i] = -st.trace() / 3.0;
+    q[i] = von_mises(st);
+    eps[i] = p.state[i].plastic_strain;
+    ratio[i] = c_ratio(s, i);
+    volume[i] = p.volume[i];
+  }
+  f.extra_scalars = {{"stress_xx", sxx},      {"stress_yy", syy},     {"stress_zz", szz},
+                     {"stress_xy", sxy},      {"pressure", pressure}, {"von_mises", q},
+                     {"plastic_strain", eps}, {"c_over_c0", ratio},   {"volume", volume}};
+  if (D == 3) {
+    f.extra_scalars["stress_xz"] = sxz;
+    f.extra_scalars["stress_yz"] = syz;
+  }
+  particles_->add(s.time, f);
+}
+
+template <int D>
+void MpmOutputs<D>::on_progress(double time, double end, double steps_per_s) {
+  series_->flush();
+  if (progress) progress(time, end, steps_per_s);
+}
+
+template class MpmOutputs<2>;
+template class MpmOutputs<3>;
+
+}  // namespace talus::mpm

@@ -1,0 +1,43 @@
+#pragma once
+// Turns the state of an MPM run into the files of its output folder: the time
+// series (series.csv) and ParaView snapshots of the material points
+// (particles.pvd) with stress, plastic strain and c/c0. The solver knows
+// nothing of files and the io writers nothing of physics; this sits between.
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "talus/io/csv_writer.hpp"
+#include "talus/io/vtk_writer.hpp"
+#include "talus/mpm/driver.hpp"
+
+namespace talus::mpm {
+
+template <int D>
+class MpmOutputs final : public MpmObserver<D> {
+ public:
+  // initial_cohesion: c0 per material, for c/c0.
+  MpmOutputs(std::filesystem::path dir, std::vector<double> initial_cohesion);
+
+  void on_series(const Solver<D>& s) override;
+  void on_snapshot(const Solver<D>& s) override;
+  void on_progress(double time, double end, double steps_per_s) override;
+
+  std::function<void(double, double, double)> progress;  // set by the app
+
+  // Headline values seen in the series, for the summary.
+  double peak_kinetic_energy = 0.0, peak_kinetic_energy_time = 0.0;
+  double initial_front_x = 0.0, initial_top = 0.0;
+
+ private:
+  double c_ratio(const Solver<D>& s, std::size_t p) const;
+
+  std::filesystem::path dir_;
+  std::vector<double> c0_;
+  std::unique_ptr<io::CsvSeries> series_;
+  std::unique_ptr<io::PvdSeries> particles_;
+  bool first_ = true;
+};
+
+}  // namespace talus::mpm

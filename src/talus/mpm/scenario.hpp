@@ -1,0 +1,60 @@
+#pragma once
+// The resolved parameters of an MPM run, as read from a scenario file by
+// io/scenario_mpm.cpp (angles in radians, defaults filled in).
+#include <array>
+#include <string>
+#include <vector>
+
+#include "talus/mpm/grid.hpp"
+#include "talus/mpm/materials.hpp"
+#include "talus/mpm/solver.hpp"
+
+namespace talus::mpm {
+
+struct GridParams {
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
+  double cell_size = 0.0;
+  // xmin, xmax, ymin, ymax, zmin, zmax (the z pair unused in 2D)
+  std::array<BoundaryKind, 6> faces{};
+};
+
+// A box of material filled with per_cell^D points per cell.
+struct BodyParams {
+  std::string material;
+  int material_index = 0;
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  int per_cell = 2;
+  Vec3 velocity = Vec3::Zero();
+  // Geostatic initial stress: vertical stress rho g depth below the box top,
+  // horizontal k0 times it (k0 <= 0: nu / (1 - nu), the elastic value of
+  // gravity loading between rollers).
+  bool geostatic = false;
+  double k0 = 0.0;
+};
+
+struct MpmOutputParams {
+  double series_interval = 0.0;    // s; 0 = 200 rows over the run
+  double snapshot_interval = 0.0;  // s; 0 = first and last only
+  bool snapshots = true;
+};
+
+struct MpmScenario {
+  std::string name, description;
+  int dimension = 2;
+  double duration = 0.0;
+  SolverParams solver;
+  GridParams grid;
+  std::vector<MaterialParams> materials;
+  std::vector<BodyParams> bodies;
+  MpmOutputParams output;
+};
+
+// The solver with its grid, materials and points. Throws InputError when a
+// body lies outside the grid or the GIMP particle would be wider than a cell.
+template <int D>
+Solver<D> build_mpm(const MpmScenario& sc);
+
+// K0 used for a body's geostatic stress.
+double resolved_k0(const BodyParams& body, const MaterialParams& material);
+
+}  // namespace talus::mpm

@@ -1,0 +1,237 @@
+#include "talus/mpm/solver.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/core/error.hpp"
+
+namespace talus::mpm {
+
+namespace {
+
+[[noreturn]] void left_grid(double time, std::size_t p) {
+  throw RunError(fmt::format(
+      "t = {:.6g} s: material point {} left the grid or has a non-finite position; enlarge "
+      "[grid] or close its faces with \"roller\"/\"fixed\" boundaries",
+      time, p));
+}
+
+}  // namespace
+
+template <int D>
+Solver<D>::Solver(Grid<D> g, std::vector<Material> m, SolverParams p)
+    : grid(std::move(g)), materials(std::move(m)), params(p) {}
+
+template <int D>
+double Solver<D>::time_step() const {
+  if (params.fixed_time_step > 0.0) return params.fixed_time_step;
+  double speed = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const double c = wave_speed(materials[particles.material[i]]);
+    speed = std::max(speed, c + particles.v[i].norm());
+  }
+  double dt = speed > 0.0 ? params.cfl * grid.h / speed : params.cfl * grid.h;
+  // Explicit viscosity is stable for dt < rho h^2 / (2 D eta).
+  for (const auto& m : materials)
+    if (const auto* fluid = std::get_if<NewtonianFluid>(&m); fluid && fluid->viscosity > 0.0)
+      dt = std::min(dt, params.cfl * fluid->density * grid.h * grid.h / (D * fluid->viscosity));
+  return dt;
+}
+
+template <int D>
+double Solver<D>::advance() {
+  const double dt = time_step();
+  step(dt);
+  return dt;
+}
+
+template <int D>
+void Solver<D>::step(double dt) {
+  if (by_material_.size() != materials.size() || [&] {
+        std::size_t n = 0;
+        for (const auto& list : by_material_) n += list.size();
+        return n != particles.size();
+      }()) {
+    by_material_.assign(materials.size(), {});
+    for (std::size_t i = 0; i < particles.size(); ++i)
+      by_material_[particles.material[i]].push_back(static_cast<int>(i));
+  }
+  with_shape(params.shape, [&](auto shape) { step_with<decltype(shape)>(dt); });
+  time += dt;
+  last_dt = dt;
+  ++steps;
+}
+
+// Mass and momentum (and, with forces, internal and gravity forces) of the
+// particles on the nodes.
+template <int D>
+template <class Shape>
+void Solver<D>::to_grid(bool forces) {
+  const auto n = static_cast<std::int64_t>(particles.size());
+  const std::int64_t nodes = grid.nodes();
+  const int threads = omp_get_max_threads();
+  buffers_.resize(threads);
+  const Vec g = gravity();
+  const double l = params.gimp_half_width;
+  bool outside = false;
+  std::int64_t bad = 0;
+#pragma omp parallel num_threads(threads)
+  {
+    NodeBuffer& buf = buffers_[omp_get_thread_num()];
+    buf.mass.assign(nodes, 0.0);
+    buf.momentum.assign(nodes, Vec::Zero());
+    if (forces) buf.force.assign(nodes, Vec::Zero());
+    Stencil<D, Shape> st;
+#pragma omp for schedule(static)
+    for (std::int64_t p = 0; p < n; ++p) {
+      if (!st.compute(grid, particles.x[p], l)) {
+#pragma omp critical
+        {
+          outside = true;
+          bad = p;
+        }
+        continue;
+      }
+      const double m = particles.mass[p];
+      const Vec mv = m * particles.v[p];
+      const auto sigma = particles.state[p].stress.template topLeftCorner<D, D>().eval();
+      const double vol = particles.volume[p];
+      for (int k = 0; k < st.count; ++k) {
+        const auto a = st.node[k];
+        buf.mass[a] += st.w[k] * m;
+        buf.momentum[a] += st.w[k] * mv;
+        if (forces) buf.force[a] += st.w[k] * m * g - vol * (sigma * st.grad[k]);
+      }
+    }
+    // Sum in thread order: the same result every run for this thread count.
+#pragma omp for schedule(static)
+    for (std::int64_t a = 0; a < nodes; ++a) {
+      double m = 0.0;
+      Vec mv = Vec::Zero(), f = Vec::Zero();
+      for (int t = 0; t < threads; ++t) {
+        m += buffers_[t].mass[a];
+        mv += buffers_[t].momentum[a];
+        if (forces) f += buffers_[t].force[a];
+      }
+      grid.mass[a] = m;
+      grid.momentum[a] = mv;
+      if (forces) grid.force[a] = f;
+    }
+  }
+  if (outside) left_grid(time, bad);
+}
+
+template <int D>
+template <class Shape>
+void Solver<D>::step_with(double dt) {
+  const auto n = static_cast<std::int64_t>(particles.size());
+  const std::int64_t nodes = grid.nodes();
+  double mass_floor = 0.0;
+  for (double m : particles.mass) mass_floor = std::max(mass_floor, m);
+  mass_floor *= 1e-12;
+  const double alpha = params.local_damping;
+
+  // 1. particles -> grid
+  to_grid<Shape>(true);
+  grid.fold(grid.mass, grid.momentum, &grid.force);
+
+  // 2. grid momentum update with Cundall's local damping, then the constraints
+#pragma omp parallel for schedule(static)
+  for (std::int64_t a = 0; a < nodes; ++a) {
+    const double m = grid.mass[a];
+    if (m <= mass_floor) {
+      grid.velocity_old[a].setZero();
+      grid.velocity[a].setZero();
+      continue;
+    }
+    const Vec v = grid.momentum[a] / m;
+    Vec f = grid.force[a];
+    if (alpha > 0.0)
+      for (int d = 0; d < D; ++d)
+        f[d] -= alpha * std::abs(f[d]) * (v[d] > 0 ? 1 : v[d] < 0 ? -1 : 0);
+    grid.velocity_old[a] = v;
+    grid.velocity[a] = v + dt / m * f;
+  }
+  grid.constrain(grid.velocity_old);
+  grid.constrain(grid.velocity);
+
+  // 3. grid -> particles: velocities (and for USL positions and gradients)
+  const double flip = params.flip, l = params.gimp_half_width;
+  const bool usl = params.scheme == Scheme::Usl;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t p = 0; p < n; ++p) {
+    Stencil<D, Shape> st;
+    st.compute(grid, particles.x[p], l);  // checked in to_grid
+    Vec dv = Vec::Zero(), v_pic = Vec::Zero();
+    typename Eigen::Matrix<double, D, D> grad_v = Eigen::Matrix<double, D, D>::Zero();
+    for (int k = 0; k < st.count; ++k) {
+      const Vec& vn = grid.velocity[st.node[k]];
+      dv += st.w[k] * (vn - grid.velocity_old[st.node[k]]);
+      v_pic += st.w[k] * vn;
+      if (usl) grad_v += vn * st.grad[k].transpose();
+    }
+    particles.v[p] = flip * (particles.v[p] + dv) + (1.0 - flip) * v_pic;
+    if (usl) {
+      particles.velocity_gradient[p] = embed(grad_v);
+      particles.x[p] += dt * v_pic;
+    }
+  }
+
+  if (!usl) {
+    // 4. MUSL: the new particle momenta back to the grid, then the gradient
+    to_grid<Shape>(false);
+    grid.fold(grid.mass, grid.momentum, nullptr);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t a = 0; a < nodes; ++a)
+      grid.velocity_old[a] =
+          grid.mass[a] > mass_floor ? (grid.momentum[a] / grid.mass[a]).eval() : Vec::Zero();
+    grid.constrain(grid.velocity_old);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t p = 0; p < n; ++p) {
+      Stencil<D, Shape> st;
+      st.compute(grid, particles.x[p], l);
+      Vec v_move = Vec::Zero();
+      typename Eigen::Matrix<double, D, D> grad_v = Eigen::Matrix<double, D, D>::Zero();
+      for (int k = 0; k < st.count; ++k) {
+        v_move += st.w[k] * grid.velocity[st.node[k]];
+        grad_v += grid.velocity_old[st.node[k]] * st.grad[k].transpose();
+      }
+      particles.velocity_gradient[p] = embed(grad_v);
+      particles.x[p] += dt * v_move;
+    }
+  }
+
+  // 5. volumes and stresses
+  update_stresses(dt);
+  for (std::int64_t p = 0; p < n; ++p)
+    if (!particles.v[p].allFinite() || !particles.x[p].allFinite()) left_grid(time + dt, p);
+}
+
+template <int D>
+void Solver<D>::update_stresses(double dt) {
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const std::vector<int>& list = by_material_[m];
+    const auto count = static_cast<std::int64_t>(list.size());
+    std::visit(
+        [&](const auto& model) {
+#pragma omp parallel for schedule(static)
+          for (std::int64_t k = 0; k < count; ++k) {
+            const int p = list[k];
+            const Mat3& lp = particles.velocity_gradient[p];
+            const double v_old = particles.volume[p];
+            particles.volume[p] = v_old * (1.0 + lp.trace() * dt);
+            model.update(particles.state[p], lp, dt,
+                         (particles.volume[p] - v_old) / particles.volume0[p]);
+          }
+        },
+        materials[m]);
+  }
+}
+
+template class Solver<2>;
+template class Solver<3>;
+
+}  // namespace talus::mpm
