@@ -7,6 +7,7 @@
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/output_observer.hpp"
+#include "talus/runout/grid/fv2d_run.hpp"
 #include "talus/runout/results.hpp"
 #include "talus/runout/scenario.hpp"
 
@@ -28,5 +29,10 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
 void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanModel& model,
                           const runout::RunoutResults& results, const RunSummary& summary,
                           const std::string& status, const std::string& error);
+
+void write_fv2d_summary(const runout::RunoutScenario& sc, const runout::Fv2dSolver& solver,
+                        const runout::Fv2dMaxima& maxima, double initial_volume,
+                        const RunSummary& summary, int threads, const std::string& status,
+                        const std::string& error);
 
 }  // namespace talus::app
