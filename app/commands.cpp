@@ -22,6 +22,8 @@
 #include "talus/io/scenario.hpp"
 #include "talus/io/scenario_runout.hpp"
 #include "talus/runout/builder.hpp"
+#include "talus/runout/grid/fv2d_builder.hpp"
+#include "talus/runout/grid/fv2d_output.hpp"
 #include "talus/runout/output_observer.hpp"
 #include "talus/io/scenario_mpm.hpp"
 #include "talus/mpm/scenario.hpp"
@@ -116,11 +118,44 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   return 0;
 }
 
+// --- runout, model = "fv2d": 2D on a terrain grid ---
+int run_fv2d_scenario(const runout::RunoutScenario& sc, const fs::path& out,
+                      const RunOptions& opt) {
+  const auto t_setup = std::chrono::steady_clock::now();
+  auto solver = runout::build_fv2d(sc);
+  prepare_output(out, opt.force);
+  std::ofstream(out / "scenario.toml") << io::runout_scenario_to_toml(sc);
+  runout::Fv2dOutputs outputs(out, sc.grid);
+  if (!opt.quiet && isatty(STDERR_FILENO))
+    outputs.progress = [](double t, double e, double sps) { progress_line(t, e, sps, 1e-2); };
+  RunSummary summary;
+  summary.output = out;
+  summary.setup_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_setup).count();
+  runout::Fv2dMaxima maxima;
+  const double v0 = solver.volume();
+  try {
+    const auto stats = runout::run_fv2d(solver, runout::fv2d_run_control(sc), maxima, {&outputs});
+    summary.steps = stats.steps;
+    summary.loop_seconds = stats.wall_seconds;
+    outputs.write_results(solver, maxima);
+    write_fv2d_summary(sc, solver, maxima, v0, summary, opt.threads, "completed", "");
+  } catch (const RunError& e) {
+    write_fv2d_summary(sc, solver, maxima, v0, summary, opt.threads, "failed", e.what());
+    throw;
+  }
+  if (!opt.quiet)
+    fmt::print(stderr, "talus: {} steps in {:.3f} s; results in {}\n", summary.steps,
+               summary.loop_seconds, out.string());
+  return 0;
+}
+
 // --- runout (method = "runout"): 1D DAN ---
 int run_runout_scenario(const io::ScenarioFile& file, const RunOptions& opt) {
   const auto sc = io::parse_runout_scenario(file);
   const fs::path out =
       opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name) : fs::path(opt.out);
+  if (sc.model == runout::RunoutModel::Fv2d) return run_fv2d_scenario(sc, out, opt);
   const auto t_setup = std::chrono::steady_clock::now();
   auto setup = runout::build_dan(sc);
   prepare_output(out, opt.force);
@@ -240,6 +275,13 @@ int validate_command(const ValidateOptions& opt) {
   const auto file = io::load_scenario_file(opt.file, opt.sets);
   if (file.method == "runout") {
     const auto rsc = io::parse_runout_scenario(file);
+    if (rsc.model == runout::RunoutModel::Fv2d) {
+      const auto solver = runout::build_fv2d(rsc);
+      fmt::print("{}: valid (2D runout on a {} x {} grid of {} m cells, {:.4g} m^3 released)\n",
+                 opt.file, rsc.grid.shape.nx, rsc.grid.shape.ny, rsc.grid.shape.dx,
+                 solver.volume());
+      return 0;
+    }
     const auto setup = runout::build_dan(rsc);
     fmt::print("{}: valid (1D DAN runout, {} boundary blocks, {:.4g} m^3 released)\n", opt.file,
                setup.model.size(), setup.model.total_mass() / rsc.params.density);

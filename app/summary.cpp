@@ -182,4 +182,61 @@ template void write_mpm_summary<3>(const mpm::MpmScenario&, const mpm::Solver<3>
                                    const mpm::MpmOutputs<3>&, const RunSummary&, int,
                                    const std::string&, const std::string&);
 
+// --- runout, model = "fv2d" ---
+void write_fv2d_summary(const runout::RunoutScenario& sc, const runout::Fv2dSolver& solver,
+                        const runout::Fv2dMaxima& m, double initial_volume,
+                        const RunSummary& summary, int threads, const std::string& status,
+                        const std::string& error) {
+  using nlohmann::json;
+  const auto& g = sc.grid.shape;
+  double deposit_area = 0.0, affected_area = 0.0, peak_pressure = 0.0;
+  for (std::size_t c = 0; c < g.cells(); ++c) {
+    if (solver.normal_height(c) > 0.01) deposit_area += g.cell_area();
+    if (m.height[c] > 0.01) affected_area += g.cell_area();
+    peak_pressure = std::max(peak_pressure, m.pressure[c]);
+  }
+  const double volume = solver.volume();
+  json j = {
+      {"talus_version", talus::version()},
+      {"status", status},
+      {"method", "runout"},
+      {"model", "fv2d"},
+      {"dimension", 2},
+      {"scenario", io::runout_scenario_to_json(sc)},
+      {"resolved",
+       {{"cells_x", g.nx},
+        {"cells_y", g.ny},
+        {"cell_size_m", {g.dx, g.dy}},
+        {"x_west", sc.grid.x_west},
+        {"y_north", sc.grid.y_north},
+        {"threads", threads}}},
+      {"run",
+       {{"steps", summary.steps},
+        {"simulated_time_s", solver.state().time},
+        {"loop_wall_s", summary.loop_seconds},
+        {"setup_wall_s", summary.setup_seconds},
+        {"cell_updates_per_s",
+         summary.loop_seconds > 0 ? g.cells() * summary.steps / summary.loop_seconds : 0.0}}},
+      {"metrics",
+       {{"released_volume_m3", initial_volume},
+        {"volume_m3", volume},
+        {"outflow_volume_m3", solver.outflow_volume()},
+        {"volume_error_relative",
+         initial_volume > 0
+             ? std::abs(volume + solver.outflow_volume() - initial_volume) / initial_volume
+             : 0.0},
+        {"max_height_m", m.peak_height},
+        {"max_speed_m_s", m.peak_speed},
+        {"max_pressure_Pa", peak_pressure},
+        {"affected_area_m2", affected_area},
+        {"deposit_area_m2", deposit_area},
+        {"at_rest", solver.at_rest()},
+        {"kinetic_energy_J", solver.kinetic_energy()}}},
+  };
+  if (!error.empty()) j["error"] = error;
+  const auto tmp = summary.output / "summary.json.tmp";
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  std::filesystem::rename(tmp, summary.output / "summary.json");
+}
+
 }  // namespace talus::app

@@ -7,6 +7,7 @@
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/output_observer.hpp"
+#include "talus/runout/grid/fv2d_run.hpp"
 #include "talus/runout/results.hpp"
 #include "talus/runout/scenario.hpp"
 #include "talus/mpm/output_observer.hpp"
@@ -35,5 +36,10 @@ template <int D>
 void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& solver,
                        const mpm::MpmOutputs<D>& outputs, const RunSummary& summary, int threads,
                        const std::string& status, const std::string& error);
+
+void write_fv2d_summary(const runout::RunoutScenario& sc, const runout::Fv2dSolver& solver,
+                        const runout::Fv2dMaxima& maxima, double initial_volume,
+                        const RunSummary& summary, int threads, const std::string& status,
+                        const std::string& error);
 
 }  // namespace talus::app

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "talus/core/error.hpp"
+#include "talus/io/raster.hpp"
 #include "talus/io/scenario_detail.hpp"
 
 namespace talus::io {
@@ -27,9 +28,13 @@ using runout::ReleaseKind;
 using runout::RheologyKind;
 
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method",   "name",           "description", "run",     "path",
-    "material", "earth_pressure", "smoothing",   "release", "output"};
-const EnumNames<int> kModels = {{"dan", 0}};
+    "method",         "name",      "description", "run",    "path",   "material",
+    "earth_pressure", "smoothing", "release",     "output", "terrain"};
+using runout::GridBoundary;
+using runout::RunoutModel;
+const EnumNames<RunoutModel> kModels = {{"dan", RunoutModel::Dan}, {"fv2d", RunoutModel::Fv2d}};
+const EnumNames<GridBoundary> kBoundaries = {{"wall", GridBoundary::Wall},
+                                             {"open", GridBoundary::Open}};
 const EnumNames<PathKind> kPathKinds = {{"flume", PathKind::Flume}, {"profile", PathKind::Profile}};
 const EnumNames<ReleaseKind> kReleaseKinds = {{"flume", ReleaseKind::Flume},
                                               {"polygon", ReleaseKind::Polygon}};
@@ -41,7 +46,8 @@ const EnumNames<EarthPressureMode> kPressureModes = {
     {"constant", EarthPressureMode::Constant}};
 
 void read_run(TomlReader& r, runout::RunoutScenario& s) {
-  r.enumeration("model", kModels, 0);
+  s.model = r.enumeration("model", kModels, RunoutModel::Dan);
+  const bool grid = s.model == RunoutModel::Fv2d;
   auto& c = s.control;
   c.duration = required_number_in(r, "duration", positive());
   if (r.is_string("time_step")) {
@@ -52,7 +58,14 @@ void read_run(TomlReader& r, runout::RunoutScenario& s) {
     r.expect(!dt || *dt > 0, "time_step", "a positive number (s) or \"auto\"");
     c.time_step = dt.value_or(0.0);
   }
-  c.courant = number_in(r, "courant", c.courant, between(0.0, 1.0, true, false));
+  if (grid) {
+    // The MUSCL scheme keeps depths positive up to 0.5 (fv2d.hpp).
+    c.courant = number_in(r, "courant", 0.45, between(0.0, 0.5, true, false));
+    s.grid.max_time_step = number_in(r, "max_time_step", s.grid.max_time_step, positive());
+  } else {
+    r.reject({"max_time_step"}, "is only used by model 'fv2d'");
+    c.courant = number_in(r, "courant", c.courant, between(0.0, 1.0, true, false));
+  }
   s.params.gravity = number_in(r, "gravity", s.params.gravity, positive());
   c.stop_at_rest = r.boolean("stop_at_rest", c.stop_at_rest);
   r.finish();
@@ -108,8 +121,17 @@ void read_material(TomlReader& r, runout::DanParams& d) {
   r.finish();
 }
 
-void read_earth_pressure(TomlReader& r, runout::EarthPressure& e) {
-  e.mode = r.enumeration("model", kPressureModes, EarthPressureMode::Hungr);
+void read_earth_pressure(TomlReader& r, runout::EarthPressure& e, bool grid) {
+  e.mode = r.enumeration("model", kPressureModes,
+                         grid ? EarthPressureMode::SavageHutter : EarthPressureMode::Hungr);
+  if (grid) {
+    if (e.mode == EarthPressureMode::Hungr)
+      r.fail("model",
+             "the 'hungr' law needs block strains (1D); model 'fv2d' takes "
+             "'savage_hutter' or 'constant'");
+    r.reject({"lambda", "modify_basal_angle", "passive_strain", "initial"},
+             "is not used by model 'fv2d' (k_a / k_p from the flow's divergence)");
+  }
   if (e.mode == EarthPressureMode::Constant) {
     r.reject({"lambda", "passive_strain", "initial", "modify_basal_angle"},
              "is not used by the 'constant' model");
@@ -155,8 +177,67 @@ void read_release(TomlReader& r, const runout::PathSpec& path, runout::ReleaseSp
   r.finish();
 }
 
+// A raster on the terrain's grid (or the terrain itself when `terrain` is
+// null); no-data cells become 0, except in the terrain where they are errors.
+std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail::DemContext& ctx,
+                              std::string& file, runout::GridSpec& g, bool terrain) {
+  file = detail::required_file(r, key, ctx);
+  Raster raster;
+  try {
+    raster = read_raster(file);
+  } catch (const InputError& e) {
+    r.fail(key, e.what());
+  }
+  if (terrain) {
+    g.shape = {raster.nx, raster.ny, raster.dx, raster.dy};
+    g.x_west = raster.x_west, g.y_north = raster.y_north, g.projection = raster.projection;
+  } else {
+    Raster ref;
+    ref.nx = g.shape.nx, ref.ny = g.shape.ny, ref.dx = g.shape.dx, ref.dy = g.shape.dy;
+    ref.x_west = g.x_west, ref.y_north = g.y_north;
+    if (!same_grid(raster, ref))
+      r.fail(key, fmt::format("{}: the grid ({} x {} cells of {} m) is not the terrain's "
+                              "({} x {} cells of {} m, same corner)",
+                              file, raster.nx, raster.ny, raster.dx, ref.nx, ref.ny, ref.dx));
+  }
+  for (std::size_t j = 0; j < raster.ny; ++j)
+    for (std::size_t i = 0; i < raster.nx; ++i) {
+      double& v = raster.at(i, j);
+      if (raster.is_nodata(v) || !std::isfinite(v)) {
+        if (terrain)
+          r.fail(key, fmt::format("{}: cell (column {}, row {}) has no elevation", file, i, j));
+        v = 0.0;
+      } else if (!terrain && v < 0.0) {
+        r.fail(key, fmt::format("{}: cell (column {}, row {}) is negative ({})", file, i, j, v));
+      }
+    }
+  return std::move(raster.values);
+}
+
+void read_terrain(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
+  g.elevation = read_grid(r, "file", ctx, g.terrain_file, g, true);
+  if (r.has("obstacles")) g.obstacles = read_grid(r, "obstacles", ctx, g.obstacles_file, g, false);
+  g.boundary = r.enumeration("boundary", kBoundaries, g.boundary);
+  const auto order = r.integer("order", g.order);
+  r.expect(order == 1 || order == 2, "order", "1 (first order) or 2 (MUSCL)");
+  g.order = static_cast<int>(order);
+  g.dry_depth = number_in(r, "dry_depth", g.dry_depth, positive());
+  r.finish();
+}
+
+void read_grid_release(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
+  r.required_enum<int>("type", {{"raster", 0}});
+  g.release_depth = read_grid(r, "file", ctx, g.release_file, g, false);
+  r.finish();
+}
+
 void read_output(TomlReader& r, runout::RunoutScenario& s) {
   s.control.series_interval = number_in(r, "series_interval", 0.01, positive());
+  if (s.model == RunoutModel::Fv2d) {
+    r.reject({"snapshot_interval", "tail_fraction"}, "is not used by model 'fv2d'");
+    r.finish();
+    return;
+  }
   s.control.snapshot_interval = number_in(r, "snapshot_interval", 0.1, non_negative());
   s.tail_fraction = number_in(r, "tail_fraction", s.tail_fraction, between(0.0, 1.0, true, true));
   r.finish();
@@ -239,16 +320,29 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
 
   TomlReader run = root.required_table("run");
   read_run(run, s);
-  TomlReader path = root.required_table("path");
-  read_path(path, ctx, s.path);
+  const bool grid = s.model == RunoutModel::Fv2d;
+  if (grid) {
+    root.reject({"path", "smoothing"}, "is not used by model 'fv2d' (the terrain is [terrain])");
+    TomlReader terrain = root.required_table("terrain");
+    read_terrain(terrain, ctx, s.grid);
+  } else {
+    root.reject({"terrain"}, "is only used by model 'fv2d' (set run.model = \"fv2d\")");
+    TomlReader path = root.required_table("path");
+    read_path(path, ctx, s.path);
+  }
   TomlReader material = root.required_table("material");
   read_material(material, s.params);
   TomlReader pressure = table_or_empty(root, "earth_pressure", empty);
-  read_earth_pressure(pressure, s.params.pressure);
-  TomlReader smoothing = table_or_empty(root, "smoothing", empty);
-  read_smoothing(smoothing, s.params.smoothing);
+  read_earth_pressure(pressure, s.params.pressure, grid);
+  if (!grid) {
+    TomlReader smoothing = table_or_empty(root, "smoothing", empty);
+    read_smoothing(smoothing, s.params.smoothing);
+  }
   TomlReader release = root.required_table("release");
-  read_release(release, s.path, s.release);
+  if (grid)
+    read_grid_release(release, ctx, s.grid);
+  else
+    read_release(release, s.path, s.release);
   TomlReader output = table_or_empty(root, "output", empty);
   read_output(output, s);
   root.finish();
@@ -258,11 +352,13 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
 nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) {
   using Json = nlohmann::ordered_json;
   const auto& p = s.params;
-  Json run = {{"model", "dan"}, {"duration", s.control.duration}};
+  const bool grid = s.model == RunoutModel::Fv2d;
+  Json run = {{"model", detail::name_of(kModels, s.model)}, {"duration", s.control.duration}};
   run["time_step"] = s.control.time_step > 0 ? Json(s.control.time_step) : Json("auto");
   run["courant"] = s.control.courant;
   run["gravity"] = p.gravity;
   run["stop_at_rest"] = s.control.stop_at_rest;
+  if (grid) run["max_time_step"] = s.grid.max_time_step;
   Json path = {{"type", detail::name_of(kPathKinds, s.path.kind)}, {"spacing", s.path.spacing}};
   if (s.path.kind == PathKind::Flume) {
     path["beta"] = s.path.beta_deg;
@@ -295,6 +391,24 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
       pressure["passive_strain"] = p.pressure.passive_strain;
       pressure["initial"] = p.pressure.constant;
     }
+  }
+  if (grid) {
+    if (p.pressure.mode != EarthPressureMode::Constant)
+      pressure = {{"model", detail::name_of(kPressureModes, p.pressure.mode)}};
+    Json terrain = {{"file", s.grid.terrain_file}};
+    if (!s.grid.obstacles_file.empty()) terrain["obstacles"] = s.grid.obstacles_file;
+    terrain["boundary"] = detail::name_of(kBoundaries, s.grid.boundary);
+    terrain["order"] = s.grid.order;
+    terrain["dry_depth"] = s.grid.dry_depth;
+    return Json{{"method", "runout"},
+                {"name", s.name},
+                {"description", s.description},
+                {"run", run},
+                {"terrain", terrain},
+                {"material", material},
+                {"earth_pressure", pressure},
+                {"release", {{"type", "raster"}, {"file", s.grid.release_file}}},
+                {"output", {{"series_interval", s.control.series_interval}}}};
   }
   Json smoothing = {{"enabled", p.smoothing.enabled},
                     {"c_end", p.smoothing.c_end},

@@ -8,6 +8,8 @@
 
 #include "talus/runout/dan.hpp"
 #include "talus/runout/driver.hpp"
+#include "talus/runout/grid/fv2d.hpp"
+#include "talus/runout/grid/fv2d_run.hpp"
 
 namespace talus::runout {
 
@@ -35,8 +37,28 @@ struct ReleaseSpec {
   std::size_t blocks = 100;               // boundary blocks
 };
 
+// [run] model: "dan" (1D along a path) or "fv2d" (2D on a terrain grid).
+enum class RunoutModel { Dan, Fv2d };
+
+// The 2D model's grids, read from rasters by io (all on the terrain's grid):
+// bed elevation, obstacle heights added to it (a barrier), and the released
+// thickness (measured vertically; no-data cells are 0).
+struct GridSpec {
+  std::string terrain_file, obstacles_file, release_file;
+  GridShape shape;
+  std::vector<double> elevation, obstacles, release_depth;
+  double x_west = 0.0, y_north = 0.0;  // map coordinates of the outer corner
+  std::string projection;              // WKT of the terrain raster
+  int order = 2;
+  GridBoundary boundary = GridBoundary::Wall;
+  double dry_depth = 1e-6;     // m
+  double max_time_step = 0.1;  // s
+};
+
 struct RunoutScenario {
   std::string name, description;
+  RunoutModel model = RunoutModel::Dan;
+  GridSpec grid;  // model = fv2d
   DanParams params;
   PathSpec path;
   ReleaseSpec release;

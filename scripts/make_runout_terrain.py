@@ -1,0 +1,52 @@
+#!/usr/bin/python3
+"""Writes the synthetic terrain of scenarios/runout_terrain_2d.toml as ESRI ASCII grids.
+
+A 32 deg slope that eases into a flat valley floor along x (a parabolic
+transition over 100 m), with a shallow gully down its middle; a 4 m high
+barrier across the run-out as a separate obstacle raster; and a 60 m x 40 m
+release area, 3 m thick, near the top. 90 x 50 cells of 5 m (450 m x 250 m),
+lower-left corner at (600000, 5200000).
+Usage: make_runout_terrain.py OUT_DIR
+"""
+import math
+import os
+import sys
+
+NX, NY, CELL = 90, 50, 5.0
+X0, Y0 = 600000.0, 5200000.0
+
+
+def bed(x, y):
+    s = math.tan(math.radians(32))
+    x1, x2 = 150.0, 250.0  # slope to x1, parabolic transition to x2, then flat
+    if x < x1:
+        z = s * (x2 - x) - s * (x2 - x1) / 2
+    elif x < x2:
+        z = s * (x2 - x) ** 2 / (2 * (x2 - x1))
+    else:
+        z = 0.0
+    gully = -3.0 * math.exp(-(((y - 125.0) / 30.0) ** 2)) * min(1.0, max(0.0, (x2 - x) / 100.0))
+    return z + gully
+
+
+def write(path, value):
+    with open(path, "w") as f:
+        f.write(f"ncols {NX}\nnrows {NY}\nxllcorner {X0}\nyllcorner {Y0}\ncellsize {CELL}\n")
+        f.write("NODATA_value -9999\n")
+        for j in range(NY):  # first line = northern row
+            y = (NY - j - 0.5) * CELL
+            f.write(" ".join(f"{value((i + 0.5) * CELL, y):.3f}" for i in range(NX)) + "\n")
+
+
+def main():
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    write(os.path.join(out, "terrain.asc"), bed)
+    write(os.path.join(out, "barrier.asc"),
+          lambda x, y: 4.0 if 330 <= x < 340 and 50 <= y < 200 else 0.0)
+    write(os.path.join(out, "release.asc"),
+          lambda x, y: 3.0 if 30 <= x < 90 and 105 <= y < 145 else 0.0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,128 @@
+#include "talus/io/raster.hpp"
+
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <fmt/format.h>
+#include <gdal.h>
+
+#include <cmath>
+#include <fstream>
+#include <mutex>
+
+#include "talus/core/error.hpp"
+
+namespace talus::io {
+namespace {
+
+void register_gdal() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    GDALAllRegister();
+    CPLSetErrorHandler(CPLQuietErrorHandler);  // errors are reported as exceptions
+  });
+}
+
+std::string last_gdal_error() {
+  const char* msg = CPLGetLastErrorMsg();
+  return msg && *msg ? msg : "unknown GDAL error";
+}
+
+}  // namespace
+
+Raster read_raster(const std::string& path) {
+  register_gdal();
+  CPLErrorReset();
+  GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
+  if (!ds)
+    throw InputError(fmt::format("{}: cannot read the raster ({})", path, last_gdal_error()));
+  struct Closer {
+    GDALDatasetH ds;
+    ~Closer() { GDALClose(ds); }
+  } closer{ds};
+  if (GDALGetRasterCount(ds) < 1) throw InputError(fmt::format("{}: the raster has no band", path));
+  double gt[6];
+  if (GDALGetGeoTransform(ds, gt) != CE_None) {
+    // No georeference: unit cells with the corner at the origin.
+    gt[0] = 0, gt[1] = 1, gt[2] = 0, gt[3] = 0, gt[4] = 0, gt[5] = -1;
+  }
+  if (gt[2] != 0.0 || gt[4] != 0.0)
+    throw InputError(fmt::format("{}: rotated or sheared rasters are not supported", path));
+  if (!(gt[1] > 0.0) || gt[5] == 0.0)
+    throw InputError(fmt::format("{}: the cell size must be positive", path));
+  Raster r;
+  r.nx = static_cast<std::size_t>(GDALGetRasterXSize(ds));
+  r.ny = static_cast<std::size_t>(GDALGetRasterYSize(ds));
+  r.dx = gt[1], r.dy = std::abs(gt[5]);
+  r.x_west = gt[0];
+  r.y_north = gt[5] < 0 ? gt[3] : gt[3] + gt[5] * static_cast<double>(r.ny);
+  if (const char* wkt = GDALGetProjectionRef(ds)) r.projection = wkt;
+  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  int has_nodata = 0;
+  const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+  if (has_nodata) r.nodata = nodata;
+  r.values.resize(r.nx * r.ny);
+  if (GDALRasterIO(band, GF_Read, 0, 0, static_cast<int>(r.nx), static_cast<int>(r.ny),
+                   r.values.data(), static_cast<int>(r.nx), static_cast<int>(r.ny), GDT_Float64, 0,
+                   0) != CE_None)
+    throw InputError(
+        fmt::format("{}: cannot read the raster's values ({})", path, last_gdal_error()));
+  if (gt[5] > 0) {  // south-up: flip so that row 0 is the northern one
+    for (std::size_t j = 0; j < r.ny / 2; ++j)
+      for (std::size_t i = 0; i < r.nx; ++i) std::swap(r.at(i, j), r.at(i, r.ny - 1 - j));
+  }
+  return r;
+}
+
+void write_geotiff(const std::string& path, const Raster& r) {
+  register_gdal();
+  if (r.values.size() != r.nx * r.ny || r.nx == 0 || r.ny == 0)
+    throw RunError(fmt::format("{}: raster of {} values for {} x {} cells", path, r.values.size(),
+                               r.nx, r.ny));
+  GDALDriverH driver = GDALGetDriverByName("GTiff");
+  if (!driver) throw RunError("GDAL has no GeoTIFF driver");
+  CPLErrorReset();
+  char* options[] = {const_cast<char*>("COMPRESS=DEFLATE"), nullptr};
+  GDALDatasetH ds = GDALCreate(driver, path.c_str(), static_cast<int>(r.nx), static_cast<int>(r.ny),
+                               1, GDT_Float64, options);
+  if (!ds)
+    throw RunError(fmt::format("{}: cannot write the GeoTIFF ({})", path, last_gdal_error()));
+  double gt[6] = {r.x_west, r.dx, 0.0, r.y_north, 0.0, -r.dy};
+  GDALSetGeoTransform(ds, gt);
+  if (!r.projection.empty()) GDALSetProjection(ds, r.projection.c_str());
+  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  if (r.nodata) GDALSetRasterNoDataValue(band, *r.nodata);
+  const CPLErr err =
+      GDALRasterIO(band, GF_Write, 0, 0, static_cast<int>(r.nx), static_cast<int>(r.ny),
+                   const_cast<double*>(r.values.data()), static_cast<int>(r.nx),
+                   static_cast<int>(r.ny), GDT_Float64, 0, 0);
+  GDALClose(ds);
+  if (err != CE_None)
+    throw RunError(fmt::format("{}: cannot write the GeoTIFF ({})", path, last_gdal_error()));
+}
+
+void write_npy(const std::string& path, const Raster& r) {
+  std::string header =
+      fmt::format("{{'descr': '<f8', 'fortran_order': False, 'shape': ({}, {}), }}", r.ny, r.nx);
+  // Magic (6) + version (2) + length (2) + header + '\n', padded to 64 bytes.
+  const std::size_t total = 10 + header.size() + 1;
+  header.append((64 - total % 64) % 64, ' ');
+  header.push_back('\n');
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw RunError(fmt::format("{}: cannot write the .npy file", path));
+  const unsigned short len = static_cast<unsigned short>(header.size());
+  out.write("\x93NUMPY\x01\x00", 8);
+  const char len_bytes[2] = {static_cast<char>(len & 0xff), static_cast<char>(len >> 8)};
+  out.write(len_bytes, 2);
+  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  out.write(reinterpret_cast<const char*>(r.values.data()),
+            static_cast<std::streamsize>(r.values.size() * sizeof(double)));
+}
+
+bool same_grid(const Raster& a, const Raster& b) {
+  const double tol = 1e-9 * std::min(a.dx, a.dy);
+  return a.nx == b.nx && a.ny == b.ny && std::abs(a.dx - b.dx) <= tol &&
+         std::abs(a.dy - b.dy) <= tol && std::abs(a.x_west - b.x_west) <= tol * 1e3 &&
+         std::abs(a.y_north - b.y_north) <= tol * 1e3;
+}
+
+}  // namespace talus::io

@@ -1,0 +1,398 @@
+#include "talus/runout/grid/fv2d.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "talus/core/error.hpp"
+
+namespace talus::runout {
+namespace {
+
+using Index = std::ptrdiff_t;
+
+// One side of a face, in the face's frame: u normal, v tangential, gp = k g cos^4.
+struct FaceState {
+  double h, u, v, gp;
+};
+
+inline double minmod(double a, double b) {
+  if (a * b <= 0.0) return 0.0;
+  return std::abs(a) < std::abs(b) ? a : b;
+}
+
+// HLL flux (mass, normal momentum, tangential momentum) with Davis's wave
+// speeds, and the exact dry-front speeds u -/+ 2c of a rarefaction into a dry
+// bed (Toro 2001 §10.6) so that no mass is taken from a dry side.
+inline void hll_flux(const FaceState& L, const FaceState& R, double dry, double f[3]) {
+  const bool wet_l = L.h > dry, wet_r = R.h > dry;
+  if (!wet_l && !wet_r) {
+    f[0] = f[1] = f[2] = 0.0;
+    return;
+  }
+  const double ul = wet_l ? L.u : 0.0, ur = wet_r ? R.u : 0.0;
+  const double vl = wet_l ? L.v : 0.0, vr = wet_r ? R.v : 0.0;
+  const double cl = wet_l ? std::sqrt(L.gp * L.h) : 0.0, cr = wet_r ? std::sqrt(R.gp * R.h) : 0.0;
+  double sl, sr;
+  if (!wet_r) {
+    sl = ul - cl, sr = ul + 2.0 * cl;
+  } else if (!wet_l) {
+    sl = ur - 2.0 * cr, sr = ur + cr;
+  } else {
+    sl = std::min(ul - cl, ur - cr), sr = std::max(ul + cl, ur + cr);
+  }
+  const double ql = L.h * ul, qr = R.h * ur;
+  const double fl[3] = {ql, ql * ul + 0.5 * L.gp * L.h * L.h, ql * vl};
+  const double fr[3] = {qr, qr * ur + 0.5 * R.gp * R.h * R.h, qr * vr};
+  if (sl >= 0.0) {
+    f[0] = fl[0], f[1] = fl[1], f[2] = fl[2];
+  } else if (sr <= 0.0) {
+    f[0] = fr[0], f[1] = fr[1], f[2] = fr[2];
+  } else {
+    const double ul_[3] = {L.h, ql, L.h * vl}, ur_[3] = {R.h, qr, R.h * vr};
+    const double inv = 1.0 / (sr - sl);
+    for (int m = 0; m < 3; ++m)
+      f[m] = (sr * fl[m] - sl * fr[m] + sl * sr * (ur_[m] - ul_[m])) * inv;
+  }
+}
+
+// The ghost beyond an edge: a mirror (wall) or a copy (open, zero gradient).
+inline FaceState ghost(const FaceState& inside, GridBoundary b) {
+  return b == GridBoundary::Wall ? FaceState{inside.h, -inside.u, inside.v, inside.gp} : inside;
+}
+
+bool any_wet(const FlowState& s, double dry) {
+  return std::any_of(s.h.begin(), s.h.end(), [dry](double h) { return h > dry; });
+}
+
+}  // namespace
+
+Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> initial_depth)
+    : terrain_(std::move(terrain)), p_(params) {
+  const std::size_t n = terrain_.shape().cells();
+  if (initial_depth.size() != n)
+    throw InputError(fmt::format("fv2d: {} initial depths for {} cells", initial_depth.size(), n));
+  for (std::size_t c = 0; c < n; ++c)
+    if (!(initial_depth[c] >= 0.0) || !std::isfinite(initial_depth[c]))
+      throw InputError(fmt::format("fv2d: initial depth {} of cell {} must be finite and >= 0",
+                                   initial_depth[c], c));
+  if (p_.order != 1 && p_.order != 2) throw InputError("fv2d: order must be 1 or 2");
+  if (p_.pressure.mode == EarthPressureMode::Hungr)
+    throw InputError(
+        "fv2d: the 'hungr' earth-pressure law needs block strains (1D only); use "
+        "'savage_hutter' or 'constant'");
+  if (!(p_.courant > 0.0 && p_.courant <= 0.5))
+    throw InputError("fv2d: courant must be in (0, 0.5] (positivity of the MUSCL scheme)");
+  s_.h = std::move(initial_depth);
+  s_.hu.assign(n, 0.0), s_.hv.assign(n, 0.0);
+  stage_ = s_, stage2_ = s_;
+  g_press_.resize(n), g_bed_.resize(n);
+  for (std::size_t c = 0; c < n; ++c) {
+    const double c2 = terrain_.cos2()[c];
+    g_bed_[c] = p_.gravity * c2;
+    g_press_[c] = p_.gravity * c2 * c2;
+  }
+  const auto lim = earth_pressure_limits(p_.pressure.phi_internal, p_.pressure.tan_phi_basal);
+  k_active_ = lim.active, k_passive_ = lim.passive;
+  k_.assign(n, initial_earth_pressure(p_.pressure));
+  // Both rheologies are a Coulomb part plus a part in speed^2; read the two
+  // coefficients off basal_shear once so the cell loop needs no switch.
+  coulomb_ = basal_shear(p_.rheology, 1.0, 0.0, 1.0, 1.0);
+  turbulent_ = basal_shear(p_.rheology, 0.0, 1.0, 1.0, 1.0);
+  u_.resize(n), v_.resize(n);
+  for (auto* a : {&sh_x_, &su_x_, &sv_x_, &sh_y_, &su_y_, &sv_y_}) a->assign(n, 0.0);
+  const auto& g = terrain_.shape();
+  for (int m = 0; m < 3; ++m) fx_[m].resize((g.nx + 1) * g.ny), fy_[m].resize(g.nx * (g.ny + 1));
+  quiet_.resize(n);
+}
+
+double Fv2dSolver::normal_height(std::size_t c) const {
+  return s_.h[c] * std::sqrt(terrain_.cos2()[c]);
+}
+
+double Fv2dSolver::speed(std::size_t c) const {
+  if (s_.h[c] <= p_.dry_depth) return 0.0;
+  const double u = s_.hu[c] / s_.h[c], v = s_.hv[c] / s_.h[c];
+  const double w = u * terrain_.slope_x()[c] + v * terrain_.slope_y()[c];
+  return std::sqrt(u * u + v * v + w * w);
+}
+
+double Fv2dSolver::volume() const {
+  double sum = 0.0;
+  for (double h : s_.h) sum += h;
+  return sum * terrain_.shape().cell_area();
+}
+
+double Fv2dSolver::momentum_x() const {
+  double sum = 0.0;
+  for (double q : s_.hu) sum += q;
+  return p_.density * sum * terrain_.shape().cell_area();
+}
+
+double Fv2dSolver::momentum_y() const {
+  double sum = 0.0;
+  for (double q : s_.hv) sum += q;
+  return p_.density * sum * terrain_.shape().cell_area();
+}
+
+double Fv2dSolver::kinetic_energy() const {
+  double sum = 0.0;
+  for (std::size_t c = 0; c < s_.h.size(); ++c) {
+    const double sp = speed(c);
+    sum += s_.h[c] * sp * sp;
+  }
+  return 0.5 * p_.density * sum * terrain_.shape().cell_area();
+}
+
+double Fv2dSolver::max_speed() const {
+  double m = 0.0;
+  for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, speed(c));
+  return m;
+}
+
+double Fv2dSolver::max_height() const {
+  double m = 0.0;
+  for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, normal_height(c));
+  return m;
+}
+
+bool Fv2dSolver::at_rest() const { return max_speed() < kRestSpeed; }
+
+double Fv2dSolver::stable_time_step() const {
+  const auto& g = terrain_.shape();
+  const Index n = static_cast<Index>(g.cells());
+  double rate = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : rate)
+  for (Index c = 0; c < n; ++c) {
+    const double h = s_.h[c];
+    if (h <= p_.dry_depth) continue;
+    const double a = std::sqrt(k_[c] * g_press_[c] * h);
+    const double u = s_.hu[c] / h, v = s_.hv[c] / h;
+    rate = std::max(rate, (std::abs(u) + a) / g.dx + (std::abs(v) + a) / g.dy);
+  }
+  if (rate == 0.0 && !any_wet(s_, p_.dry_depth)) return std::numeric_limits<double>::infinity();
+  // Gravity can set still material moving within a step even where no wave
+  // speed limits it (k = 0, or everything at rest): it must not cross more
+  // than `courant` of a cell in one step from rest, g dt^2 <= courant min(dx, dy).
+  const double from_rest = std::sqrt(p_.courant * std::min(g.dx, g.dy) / p_.gravity);
+  return rate > 0.0 ? std::min(p_.courant / rate, from_rest) : from_rest;
+}
+
+void Fv2dSolver::update_earth_pressure() {
+  if (p_.pressure.mode == EarthPressureMode::Constant) return;
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  auto vel = [&](const std::vector<double>& q, Index c) {
+    return s_.h[c] > p_.dry_depth ? q[c] / s_.h[c] : 0.0;
+  };
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      if (s_.h[c] <= p_.dry_depth) continue;
+      const Index w = i > 0 ? c - 1 : c, e = i < nx - 1 ? c + 1 : c;
+      const Index s = j > 0 ? c - nx : c, n = j < ny - 1 ? c + nx : c;
+      double div = 0.0;
+      if (e != w) div += (vel(s_.hu, e) - vel(s_.hu, w)) / (static_cast<double>(e - w) * g.dx);
+      if (n != s)
+        div += (vel(s_.hv, n) - vel(s_.hv, s)) / (static_cast<double>((n - s) / nx) * g.dy);
+      if (div > 0.0) k_[c] = k_active_;
+      if (div < 0.0) k_[c] = k_passive_;
+    }
+  }
+}
+
+void Fv2dSolver::reconstruct(const FlowState& in) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double dry = p_.dry_depth;
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < nx * ny; ++c) {
+    const double h = in.h[c];
+    u_[c] = h > dry ? in.hu[c] / h : 0.0;
+    v_[c] = h > dry ? in.hv[c] / h : 0.0;
+  }
+  if (p_.order == 1) return;
+    // Minmod slopes (per cell, in cell units): interface values stay between the
+    // neighbours' values, so reconstructed depths are never negative.
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      if (i > 0 && i < nx - 1) {
+        sh_x_[c] = minmod(in.h[c] - in.h[c - 1], in.h[c + 1] - in.h[c]);
+        su_x_[c] = minmod(u_[c] - u_[c - 1], u_[c + 1] - u_[c]);
+        sv_x_[c] = minmod(v_[c] - v_[c - 1], v_[c + 1] - v_[c]);
+      }
+      if (j > 0 && j < ny - 1) {
+        sh_y_[c] = minmod(in.h[c] - in.h[c - nx], in.h[c + nx] - in.h[c]);
+        su_y_[c] = minmod(u_[c] - u_[c - nx], u_[c + nx] - u_[c]);
+        sv_y_[c] = minmod(v_[c] - v_[c - nx], v_[c + nx] - v_[c]);
+      }
+    }
+  }
+}
+
+void Fv2dSolver::face_fluxes(const FlowState& in) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double dry = p_.dry_depth;
+  const GridBoundary bc = p_.boundary;
+  // Faces normal to x: face f of row j lies between cells f - 1 and f.
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index f = 0; f <= nx; ++f) {
+      FaceState L{}, R{};
+      if (f > 0) {
+        const Index c = j * nx + f - 1;
+        L = {in.h[c] + 0.5 * sh_x_[c], u_[c] + 0.5 * su_x_[c], v_[c] + 0.5 * sv_x_[c],
+             k_[c] * g_press_[c]};
+      }
+      if (f < nx) {
+        const Index c = j * nx + f;
+        R = {in.h[c] - 0.5 * sh_x_[c], u_[c] - 0.5 * su_x_[c], v_[c] - 0.5 * sv_x_[c],
+             k_[c] * g_press_[c]};
+      }
+      if (f == 0) L = ghost(R, bc);
+      if (f == nx) R = ghost(L, bc);
+      double flux[3];
+      hll_flux(L, R, dry, flux);
+      const Index k = j * (nx + 1) + f;
+      fx_[0][k] = flux[0], fx_[1][k] = flux[1], fx_[2][k] = flux[2];
+    }
+  }
+  // Faces normal to y: face f of column i lies between rows f - 1 and f; the
+  // normal velocity is v.
+#pragma omp parallel for schedule(static)
+  for (Index f = 0; f <= ny; ++f) {
+    for (Index i = 0; i < nx; ++i) {
+      FaceState L{}, R{};
+      if (f > 0) {
+        const Index c = (f - 1) * nx + i;
+        L = {in.h[c] + 0.5 * sh_y_[c], v_[c] + 0.5 * sv_y_[c], u_[c] + 0.5 * su_y_[c],
+             k_[c] * g_press_[c]};
+      }
+      if (f < ny) {
+        const Index c = f * nx + i;
+        R = {in.h[c] - 0.5 * sh_y_[c], v_[c] - 0.5 * sv_y_[c], u_[c] - 0.5 * su_y_[c],
+             k_[c] * g_press_[c]};
+      }
+      if (f == 0) L = ghost(R, bc);
+      if (f == ny) R = ghost(L, bc);
+      double flux[3];
+      hll_flux(L, R, dry, flux);
+      const Index k = f * nx + i;
+      fy_[0][k] = flux[0], fy_[1][k] = flux[2], fy_[2][k] = flux[1];
+    }
+  }
+}
+
+double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double dry = p_.dry_depth, rx = dt / g.dx, ry = dt / g.dy;
+  const auto& bx = terrain_.slope_x();
+  const auto& by = terrain_.slope_y();
+  reconstruct(in);
+  face_fluxes(in);
+  // Pass 1: which cells friction holds at rest through this stage.
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      const double h = in.h[c];
+      if (h <= dry) {
+        quiet_[c] = 1;
+        continue;
+      }
+      if (in.hu[c] != 0.0 || in.hv[c] != 0.0) {
+        quiet_[c] = 0;
+        continue;
+      }
+      const Index w = j * (nx + 1) + i, s = j * nx + i;
+      const double mx = -rx * (fx_[1][w + 1] - fx_[1][w]) - ry * (fy_[1][s + nx] - fy_[1][s]) -
+                        dt * g_bed_[c] * h * bx[c];
+      const double my = -rx * (fx_[2][w + 1] - fx_[2][w]) - ry * (fy_[2][s + nx] - fy_[2][s]) -
+                        dt * g_bed_[c] * h * by[c];
+      const double hold = dt * coulomb_ * g_bed_[c] * h;  // friction impulse at rest
+      quiet_[c] = mx * mx + my * my <= hold * hold ? 1 : 0;
+    }
+  }
+  // Pass 2: the update; no flux crosses a face between two quiet cells (the
+  // ghost beyond an edge is as quiet as the cell inside).
+  const auto& hxx = terrain_.curvature_xx();
+  const auto& hxy = terrain_.curvature_xy();
+  const auto& hyy = terrain_.curvature_yy();
+  bool finite = true;
+#pragma omp parallel for schedule(static) reduction(&& : finite)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      const bool q = quiet_[c];
+      const bool open_w = !(q && (i == 0 || quiet_[c - 1]));
+      const bool open_e = !(q && (i == nx - 1 || quiet_[c + 1]));
+      const bool open_s = !(q && (j == 0 || quiet_[c - nx]));
+      const bool open_n = !(q && (j == ny - 1 || quiet_[c + nx]));
+      const Index w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
+      double d[3];
+      for (int m = 0; m < 3; ++m)
+        d[m] = -rx * ((open_e ? fx_[m][e] : 0.0) - (open_w ? fx_[m][w] : 0.0)) -
+               ry * ((open_n ? fy_[m][n] : 0.0) - (open_s ? fy_[m][s] : 0.0));
+      const double h0 = in.h[c], h = h0 + d[0];
+      out.h[c] = h;
+      if (!std::isfinite(h)) finite = false;
+      if ((q && h0 > dry) || h <= dry) {  // held by friction, or dry
+        out.hu[c] = out.hv[c] = 0.0;
+        continue;
+      }
+      double mx = in.hu[c] + d[1] - dt * g_bed_[c] * h0 * bx[c];
+      double my = in.hv[c] + d[2] - dt * g_bed_[c] * h0 * by[c];
+      // Basal friction, implicit in the depth: it stops a cell, never reverses it.
+      const double u = mx / h, v = my / h, wz = u * bx[c] + v * by[c];
+      const double centripetal =
+          p_.curvature ? u * u * hxx[c] + 2.0 * u * v * hxy[c] + v * v * hyy[c] : 0.0;
+      const double sigma = std::max(0.0, h * terrain_.cos2()[c] * (p_.gravity + centripetal));
+      const double tau = coulomb_ * sigma + turbulent_ * p_.gravity * (u * u + v * v + wz * wz);
+      const double impulse = dt * tau, m = std::sqrt(mx * mx + my * my);
+      const double scale = m > impulse ? 1.0 - impulse / m : 0.0;
+      out.hu[c] = mx * scale, out.hv[c] = my * scale;
+      if (!std::isfinite(mx) || !std::isfinite(my)) finite = false;
+    }
+  }
+  if (!finite)
+    throw RunError(fmt::format("fv2d: a depth or momentum is not finite at t = {:.6g} s", in.time));
+  out.time = in.time + dt;
+  // Volume through open edges (faces next to a quiet cell carried nothing).
+  if (p_.boundary != GridBoundary::Open) return 0.0;
+  double out_flux = 0.0;
+  for (Index j = 0; j < ny; ++j) {
+    const Index w = j * nx, e = j * nx + nx - 1;
+    if (!quiet_[w]) out_flux -= fx_[0][j * (nx + 1)] * g.dy;
+    if (!quiet_[e]) out_flux += fx_[0][j * (nx + 1) + nx] * g.dy;
+  }
+  for (Index i = 0; i < nx; ++i) {
+    if (!quiet_[i]) out_flux -= fy_[0][i] * g.dx;
+    if (!quiet_[(ny - 1) * nx + i]) out_flux += fy_[0][ny * nx + i] * g.dx;
+  }
+  return out_flux * dt;
+}
+
+void Fv2dSolver::step(double dt) {
+  if (!(dt > 0.0)) throw RunError(fmt::format("fv2d: time step {} must be positive", dt));
+  update_earth_pressure();
+  const double o1 = euler_stage(s_, stage_, dt);
+  const double o2 = euler_stage(stage_, stage2_, dt);
+  const Index n = static_cast<Index>(s_.h.size());
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < n; ++c) {
+    s_.h[c] = 0.5 * (s_.h[c] + stage2_.h[c]);
+    s_.hu[c] = 0.5 * (s_.hu[c] + stage2_.hu[c]);
+    s_.hv[c] = 0.5 * (s_.hv[c] + stage2_.hv[c]);
+  }
+  s_.time += dt;
+  outflow_ += 0.5 * (o1 + o2);
+}
+
+}  // namespace talus::runout

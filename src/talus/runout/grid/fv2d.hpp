@@ -1,0 +1,115 @@
+#pragma once
+// 2D depth-averaged granular flow on a terrain grid (spec runout.md §2): the
+// Savage-Hutter equations written over the horizontal plane, solved with a
+// finite-volume HLL scheme (MUSCL-minmod reconstruction of h, u, v; two-stage
+// SSP Runge-Kutta; CFL time step).
+//
+// Unknowns per cell: H, the flow thickness measured vertically (volume per
+// unit horizontal area), and the horizontal momentum (H u, H v). On a plane
+// of inclination theta, transforming Savage & Hutter's bed-parallel equations
+// (bed-normal depth h_n = H cos(theta), bed-parallel speed |u| / cos(theta))
+// to horizontal coordinates gives exactly
+//   dH/dt + div(H U) = 0
+//   d(H U)/dt + div(H U U + 1/2 k g cos^4(theta) H^2 I)
+//       = -g cos^2(theta) H grad(b) - tau / rho * U / |U|
+// so a block slides with g (sin - cos tan(phi_b)) along the slope. On curved
+// terrain cos(theta) comes from the local gradient and the basal normal
+// stress gets the centripetal term: sigma_n = rho H cos^2 (g + U^T Hess(b) U)
+// (the bed-normal acceleration of a particle moving with U on z = b(x, y)).
+// The friction magnitude is the rheology's bed stress (rheology.hpp) with the
+// bed-parallel speed sqrt(|U|^2 + (U . grad b)^2).
+//
+// At rest, Coulomb friction is a reaction, not a force: a cell that starts a
+// stage at rest stays there when the driving impulse of the stage (fluxes and
+// gravity) is below what friction can hold, and no flux at all crosses a face
+// between two cells that are each held or dry. That keeps a pile below the
+// friction angle exactly at rest (HLL's numerical diffusion would otherwise
+// creep mass downhill forever). Mass fluxes cancel pairwise between cells, so
+// mass is conserved to round-off; outflow through open edges is counted.
+//
+// Earth pressure k (earth_pressure.hpp): Constant, or Savage-Hutter's k_a
+// where the flow spreads (div U > 0) and k_p where it converges, kept while
+// div U = 0 (as the 1D model does at zero strain). Hungr's strain law is 1D
+// (block strains) and is not offered here.
+#include <vector>
+
+#include "talus/runout/earth_pressure.hpp"
+#include "talus/runout/grid/terrain.hpp"
+#include "talus/runout/rheology.hpp"
+
+namespace talus::runout {
+
+enum class GridBoundary { Wall, Open };
+
+struct Fv2dParams {
+  double density = 2000.0;  // kg/m^3
+  double gravity = 9.81;    // m/s^2, acting in -z
+  BasalRheology rheology;
+  EarthPressure pressure{EarthPressureMode::SavageHutter};
+  bool curvature = true;    // centripetal term in the basal normal stress
+  int order = 2;            // 1: piecewise constant, 2: MUSCL-minmod
+  double courant = 0.45;    // dt (a_x / dx + a_y / dy) <= courant
+  double dry_depth = 1e-6;  // m: thinner cells carry no velocity
+  GridBoundary boundary = GridBoundary::Wall;
+};
+
+struct FlowState {
+  std::vector<double> h, hu, hv;  // H, H u, H v per cell
+  double time = 0.0;
+};
+
+class Fv2dSolver {
+ public:
+  // initial_depth: H per cell (>= 0, finite). Throws InputError for a size
+  // mismatch, a negative depth, order not 1 or 2, or the Hungr pressure mode.
+  Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> initial_depth);
+
+  // Largest step allowed by the CFL condition (and by gravity starting still
+  // material); infinity when every cell is dry.
+  double stable_time_step() const;
+  // One SSP-RK2 step. Throws RunError when a value is not finite.
+  void step(double dt);
+
+  const FlowState& state() const { return s_; }
+  const Terrain& terrain() const { return terrain_; }
+  const Fv2dParams& params() const { return p_; }
+  const std::vector<double>& earth_pressure() const { return k_; }
+
+  // Per cell: bed-normal flow height H cos(theta), bed-parallel speed.
+  double normal_height(std::size_t c) const;
+  double speed(std::size_t c) const;
+
+  double volume() const;  // sum H dA (m^3)
+  double mass() const { return p_.density * volume(); }
+  double outflow_volume() const { return outflow_; }  // left through open edges
+  double momentum_x() const;                          // rho sum H u dA
+  double momentum_y() const;
+  double kinetic_energy() const;  // 1/2 rho sum H |u_bed|^2 dA
+  double max_speed() const;
+  double max_height() const;  // bed-normal
+  bool at_rest() const;       // every cell slower than kRestSpeed
+  static constexpr double kRestSpeed = 1e-6;
+
+ private:
+  void update_earth_pressure();
+  // One forward-Euler stage from `in` into `out`; returns the volume that left
+  // through open edges.
+  double euler_stage(const FlowState& in, FlowState& out, double dt);
+  void reconstruct(const FlowState& in);
+  void face_fluxes(const FlowState& in);
+
+  Terrain terrain_;
+  Fv2dParams p_;
+  FlowState s_, stage_, stage2_;
+  std::vector<double> k_;                // earth-pressure coefficient per cell
+  std::vector<double> g_press_, g_bed_;  // g cos^4, g cos^2 per cell
+  double k_active_ = 1.0, k_passive_ = 1.0;
+  double coulomb_ = 0.0, turbulent_ = 0.0;  // tau = coulomb sigma + turbulent rho g |u|^2
+  double outflow_ = 0.0;
+  // Per-stage work arrays: reconstructed slopes, face fluxes, held flags.
+  std::vector<double> u_, v_, sh_x_, su_x_, sv_x_, sh_y_, su_y_, sv_y_;
+  std::vector<double> fx_[3], fy_[3];
+  std::vector<unsigned char> quiet_;
+};
+
+}  // namespace talus::runout

@@ -1,0 +1,36 @@
+#include "talus/runout/grid/fv2d_builder.hpp"
+
+namespace talus::runout {
+
+Fv2dParams fv2d_params(const RunoutScenario& sc) {
+  Fv2dParams p;
+  p.density = sc.params.density;
+  p.gravity = sc.params.gravity;
+  p.rheology = sc.params.rheology;
+  p.pressure = sc.params.pressure;
+  p.curvature = sc.params.centripetal;
+  p.courant = sc.control.courant;
+  p.order = sc.grid.order;
+  p.dry_depth = sc.grid.dry_depth;
+  p.boundary = sc.grid.boundary;
+  return p;
+}
+
+Fv2dSolver build_fv2d(const RunoutScenario& sc) {
+  std::vector<double> bed = sc.grid.elevation;
+  for (std::size_t c = 0; c < bed.size() && c < sc.grid.obstacles.size(); ++c)
+    bed[c] += sc.grid.obstacles[c];
+  return Fv2dSolver(Terrain(sc.grid.shape, std::move(bed)), fv2d_params(sc), sc.grid.release_depth);
+}
+
+Fv2dRunControl fv2d_run_control(const RunoutScenario& sc) {
+  Fv2dRunControl c;
+  c.duration = sc.control.duration;
+  c.max_time_step = sc.grid.max_time_step;
+  c.series_interval = sc.control.series_interval;
+  c.stop_at_rest = sc.control.stop_at_rest;
+  c.progress_seconds = sc.control.progress_seconds;
+  return c;
+}
+
+}  // namespace talus::runout

@@ -1,0 +1,49 @@
+#include "talus/runout/grid/fv2d_output.hpp"
+
+#include "talus/io/raster.hpp"
+
+namespace talus::runout {
+
+Fv2dOutputs::Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid)
+    : dir_(std::move(dir)), grid_(grid) {
+  series_ = std::make_unique<io::CsvSeries>(
+      dir_ / "series.csv",
+      std::vector<std::string>{"time", "volume", "outflow_volume", "mass", "momentum_x",
+                               "momentum_y", "kinetic_energy", "max_speed", "max_height",
+                               "flowing_area"},
+      false);
+}
+
+void Fv2dOutputs::on_series(const Fv2dSolver& s) {
+  std::size_t flowing = 0;
+  for (std::size_t c = 0; c < s.state().h.size(); ++c)
+    if (s.speed(c) >= Fv2dSolver::kRestSpeed) ++flowing;
+  series_->row({s.state().time, s.volume(), s.outflow_volume(), s.mass(), s.momentum_x(),
+                s.momentum_y(), s.kinetic_energy(), s.max_speed(), s.max_height(),
+                static_cast<double>(flowing) * s.terrain().shape().cell_area()});
+}
+
+void Fv2dOutputs::on_progress(double time, double end, double steps_per_s) {
+  if (progress) progress(time, end, steps_per_s);
+}
+
+void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const {
+  io::Raster r;
+  r.nx = grid_.shape.nx, r.ny = grid_.shape.ny, r.dx = grid_.shape.dx, r.dy = grid_.shape.dy;
+  r.x_west = grid_.x_west, r.y_north = grid_.y_north, r.projection = grid_.projection;
+  auto write = [&](const std::string& name, std::vector<double> values) {
+    r.values = std::move(values);
+    io::write_geotiff((dir_ / (name + ".tif")).string(), r);
+    io::write_npy((dir_ / (name + ".npy")).string(), r);
+  };
+  std::vector<double> deposit(s.state().h.size());
+  for (std::size_t c = 0; c < deposit.size(); ++c) deposit[c] = s.normal_height(c);
+  write("max_height", m.height);
+  write("max_speed", m.speed);
+  write("max_pressure", m.pressure);
+  write("deposit", deposit);
+  write("elevation", s.terrain().elevation());
+  series_->flush();
+}
+
+}  // namespace talus::runout

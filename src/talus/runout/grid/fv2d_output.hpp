@@ -1,0 +1,31 @@
+#pragma once
+// Files of a 2D runout run: series.csv during the run, and at the end the
+// result rasters as GeoTIFF on the terrain's grid (max_height, max_speed,
+// max_pressure, deposit, plus the bed elevation for hillshades), each also as
+// .npy for the plot script (plots/plot_runout2d.py).
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "talus/io/csv_writer.hpp"
+#include "talus/runout/grid/fv2d_run.hpp"
+#include "talus/runout/scenario.hpp"
+
+namespace talus::runout {
+
+class Fv2dOutputs final : public Fv2dObserver {
+ public:
+  Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid);
+  void on_series(const Fv2dSolver& solver) override;
+  void on_progress(double time, double end, double steps_per_s) override;
+  void write_results(const Fv2dSolver& solver, const Fv2dMaxima& maxima) const;
+
+  std::function<void(double, double, double)> progress;  // set by the app
+
+ private:
+  std::filesystem::path dir_;
+  const GridSpec& grid_;
+  std::unique_ptr<io::CsvSeries> series_;
+};
+
+}  // namespace talus::runout

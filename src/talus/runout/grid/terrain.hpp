@@ -1,0 +1,45 @@
+#pragma once
+// The bed of a 2D depth-averaged run: elevations on a regular grid of cell
+// centres, and the slope and curvature terms the flow equations need, computed
+// once from them. Cells are indexed c = j * nx + i, i along x (columns), j
+// along the rows in memory order. For a raster read from GeoTIFF or ESRI ASCII
+// the rows run from north to south, so +j points south; the equations are the
+// same in a mirrored frame, so the solver never needs to know.
+#include <cstddef>
+#include <vector>
+
+namespace talus::runout {
+
+struct GridShape {
+  std::size_t nx = 0, ny = 0;  // cells along x and along the rows
+  double dx = 1.0, dy = 1.0;   // cell size, m
+  std::size_t cells() const { return nx * ny; }
+  std::size_t index(std::size_t i, std::size_t j) const { return j * nx + i; }
+  double cell_area() const { return dx * dy; }
+};
+
+class Terrain {
+ public:
+  // Throws InputError for an empty grid, a cell size <= 0, a size mismatch or
+  // a non-finite elevation.
+  Terrain(GridShape shape, std::vector<double> elevation);
+
+  const GridShape& shape() const { return shape_; }
+  const std::vector<double>& elevation() const { return b_; }
+  // Central differences inside, one-sided at the edges (so an inclined plane
+  // is exact everywhere).
+  const std::vector<double>& slope_x() const { return bx_; }
+  const std::vector<double>& slope_y() const { return by_; }
+  // Second derivatives (zero across an edge with a single row or column).
+  const std::vector<double>& curvature_xx() const { return bxx_; }
+  const std::vector<double>& curvature_xy() const { return bxy_; }
+  const std::vector<double>& curvature_yy() const { return byy_; }
+  // cos^2 of the bed inclination, 1 / (1 + |grad b|^2).
+  const std::vector<double>& cos2() const { return cos2_; }
+
+ private:
+  GridShape shape_;
+  std::vector<double> b_, bx_, by_, bxx_, bxy_, byy_, cos2_;
+};
+
+}  // namespace talus::runout
