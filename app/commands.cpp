@@ -20,6 +20,7 @@
 #include "talus/dem/driver.hpp"
 #include "talus/dem/output_observer.hpp"
 #include "talus/io/scenario.hpp"
+#include "talus/io/compare_file.hpp"
 #include "talus/io/scenario_runout.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
@@ -259,6 +260,9 @@ int run_command(const RunOptions& opt) {
     return run_runout_scenario(file, opt);
   }
   if (file.method == "mpm") return run_mpm_command(file, opt);
+  if (file.method == "compare")
+    throw InputError(scenario_path + ": a comparison file; run it with `talus compare " +
+                     scenario_path + "`");
   const auto sc = io::parse_dem_scenario(file);
   if (!resume) {
     out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
@@ -273,6 +277,12 @@ int run_command(const RunOptions& opt) {
 
 int validate_command(const ValidateOptions& opt) {
   const auto file = io::load_scenario_file(opt.file, opt.sets);
+  if (file.method == "compare") {
+    const auto c = io::read_compare_file(opt.file);
+    for (const auto& [method, path] : c.methods) validate_command({path, {}});
+    fmt::print("{}: valid comparison of {} methods\n", opt.file, c.methods.size());
+    return 0;
+  }
   if (file.method == "runout") {
     const auto rsc = io::parse_runout_scenario(file);
     if (rsc.model == runout::RunoutModel::Fv2d) {

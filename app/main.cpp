@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "calibrate.hpp"
+#include "compare.hpp"
 #include "commands.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
@@ -34,6 +35,16 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--set", val.sets, "override a scenario value: key=value");
 
   auto* list_cmd = cli.add_subcommand("list", "list the bundled scenarios");
+  CompareOptions cmp;
+  auto* cmp_cmd = cli.add_subcommand(
+      "compare", "run one flume with several methods and report them side by side");
+  cmp_cmd->add_option("file", cmp.file, "comparison file (method = \"compare\")")->required();
+  cmp_cmd->add_option("--methods", cmp.methods, "methods to run, e.g. dem,dan (default: all listed)")
+      ->delimiter(',');
+  cmp_cmd->add_option("--out,-o", cmp.out, "output folder (default: runs/compare-<name>)");
+  cmp_cmd->add_option("--threads,-j", cmp.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  cmp_cmd->add_flag("--force", cmp.force, "write into an existing output folder");
+  cmp_cmd->add_flag("--quiet,-q", cmp.quiet, "no progress on stderr");
   CalibrateOptions cal;
   auto* cal_cmd = cli.add_subcommand(
       "calibrate", "fit one parameter to measured numbers by running the scenario per trial value");
@@ -64,6 +75,7 @@ int main(int argc, char** argv) {
     if (val_cmd->parsed()) return validate_command(val);
     if (list_cmd->parsed()) return list_command();
     if (cal_cmd->parsed()) return calibrate_command(cal);
+    if (cmp_cmd->parsed()) return compare_command(cmp);
   } catch (const talus::InputError& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 2;

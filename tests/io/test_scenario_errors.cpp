@@ -167,7 +167,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "[run] 'duration': missing (expected a positive number)"},
         BadCase{"missing_method", edit(kBase3d, "method = \"dem\"\n", ""), "method", "missing"},
         BadCase{"unknown_method", edit(kBase3d, "method = \"dem\"", "method = \"sph\" # <-"),
-                "method", "expected one of \"dem\", \"runout\" or \"mpm\", got \"sph\""},
+                "method", "expected one of \"dem\", \"runout\", \"mpm\" or \"compare\", got \"sph\""},
         BadCase{"syntax_error", edit(kBase3d, "duration = 0.1", "duration = 0.1 0.2 # <-"), "",
                 "TOML syntax error"},
         BadCase{"dimension_4", edit(kBase3d, "dimension = 3", "dimension = 4 # <-"), "dimension",

@@ -23,7 +23,7 @@ using detail::number_in;
 using detail::positive;
 using detail::required_number_in;
 
-const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}};
+const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}, {"compare", 3}};
 const std::vector<std::string_view> kTopLevelKeys = {
     "method", "name",      "description", "run",       "contact", "materials",
     "flume",  "dam_break", "walls",       "particles", "output"};
