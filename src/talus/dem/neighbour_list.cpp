@@ -16,7 +16,8 @@ void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primit
   // re-sort; carry_history finds each new contact's old one through the
   // permutation, in O(1) per contact.
   old_pairs_.swap(pairs);
-  old_pair_history_.swap(pair_history);
+  old_pair_shear_.swap(pair_shear);
+  old_pair_roll_.swap(pair_roll);
   old_wall_start_.swap(wall_start);
   old_wall_prim_.swap(wall_prim);
   old_wall_history_.swap(wall_history);
@@ -123,7 +124,7 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
             const int j0 = nc == c ? i + 1 : cell_start_[nc];
             for (int j = j0; j < cell_start_[nc + 1]; ++j) {
               const double cut = p.r[i] + p.r[j] + skin_;
-              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) out.push_back(make_pair(p, i, j));
+              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) out.push_back({i, j});
             }
           }
         }
@@ -182,7 +183,8 @@ void NeighbourList<D>::find_walls(const Particles<D>& p,
 
 template <int D>
 void NeighbourList<D>::carry_history(const Particles<D>&) {
-  pair_history.assign(pairs.size(), ContactHistory<D>{});
+  pair_shear.assign(pairs.size(), zero_of<Vec>());
+  pair_roll.assign(pairs.size(), Space<D>::rot_zero());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const int oi = order_[pairs[k].i], oj = order_[pairs[k].j];
     const int lo = std::min(oi, oj), hi = std::max(oi, oj);
@@ -190,11 +192,9 @@ void NeighbourList<D>::carry_history(const Particles<D>&) {
       const Pair& old = old_pairs_[old_rows_[q]];
       if (old.i + old.j - lo != hi) continue;
       // The spring is relative motion of i against j: swapping them flips it.
-      pair_history[k] = old_pair_history_[old_rows_[q]];
-      if (old.i != oi) {
-        pair_history[k].shear = -pair_history[k].shear;
-        pair_history[k].roll = -pair_history[k].roll;
-      }
+      const double sign = old.i != oi ? -1.0 : 1.0;
+      pair_shear[k] = sign * old_pair_shear_[old_rows_[q]];
+      pair_roll[k] = sign * old_pair_roll_[old_rows_[q]];
       break;
     }
   }
