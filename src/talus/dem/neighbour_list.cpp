@@ -107,28 +107,51 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
   const int total = dims_[0] * dims_[1] * dims_[2];
   const int chunks = std::min(total, 16);
   std::vector<std::vector<Pair>> found(chunks);
+  const Vec* x = p.x.data();
+  const double* r = p.r.data();
+  const int* start = cell_start_.data();
+  const double skin = skin_;
   for (int t = 0; t < chunks; ++t) {
 #pragma omp task default(shared) firstprivate(t)
     {
       auto& out = found[t];
+      std::size_t m = 0;  // pairs found; out is kept larger and cut at the end
       const int c0 = static_cast<int>(static_cast<int64_t>(total) * t / chunks);
       const int c1 = static_cast<int>(static_cast<int64_t>(total) * (t + 1) / chunks);
+      int lo[27], hi[27];
       for (int c = c0; c < c1; ++c) {
+        if (start[c] == start[c + 1]) continue;  // most cells of a spreading flow are empty
         const int cx = c % dims_[0], cy = (c / dims_[0]) % dims_[1], cz = c / (dims_[0] * dims_[1]);
-        for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
-          for (const auto& s : stencil) {
-            const int nx = cx + s[0], ny = cy + s[1], nz = cz + s[2];
-            if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2])
-              continue;
-            const int nc = (nz * dims_[1] + ny) * dims_[0] + nx;
-            const int j0 = nc == c ? i + 1 : cell_start_[nc];
-            for (int j = j0; j < cell_start_[nc + 1]; ++j) {
-              const double cut = p.r[i] + p.r[j] + skin_;
-              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) out.push_back({i, j});
+        // The particle ranges of the stencil's cells inside the grid; the
+        // first entry is the cell itself, searched from i + 1.
+        int ranges = 0, candidates = 0;
+        for (const auto& s : stencil) {
+          const int nx = cx + s[0], ny = cy + s[1], nz = cz + s[2];
+          if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2])
+            continue;
+          const int nc = (nz * dims_[1] + ny) * dims_[0] + nx;
+          lo[ranges] = start[nc];
+          hi[ranges] = start[nc + 1];
+          candidates += hi[ranges] - lo[ranges];
+          ++ranges;
+        }
+        for (int i = start[c]; i < start[c + 1]; ++i) {
+          if (out.size() < m + candidates) out.resize(2 * (m + candidates) + 64);
+          Pair* o = out.data();
+          const Vec xi = x[i];
+          const double ri = r[i];
+          for (int q = 0; q < ranges; ++q) {
+            // Every candidate is written; only a neighbour advances m (the
+            // test is close to random, a branch would mispredict).
+            for (int j = q == 0 ? i + 1 : lo[q]; j < hi[q]; ++j) {
+              const double cut = ri + r[j] + skin;
+              o[m] = {i, j};
+              m += (xi - x[j]).squaredNorm() < cut * cut ? 1 : 0;
             }
           }
         }
       }
+      out.resize(m);
     }
   }
 #pragma omp taskwait

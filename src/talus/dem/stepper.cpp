@@ -109,11 +109,13 @@ class Stepper final : public StepperBase<D> {
   void one_step() {
     auto& p = s_.particles;
     const double dt = s_.dt;
-    kick(0.5 * dt);
+    const Kick half = kick_params(0.5 * dt);
     const int n = static_cast<int>(p.size());
     double moved = 0.0;
+    // First half kick and drift in one pass over the particles.
 #pragma omp for schedule(static) nowait
     for (int i = 0; i < n; ++i) {
+      kick_one(p, i, half);
       p.x[i] += dt * p.v[i];
       const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
       // A NaN position counts as infinitely far: the rebuild then stops the run.
@@ -140,8 +142,7 @@ class Stepper final : public StepperBase<D> {
       prepare_thread_buffers(omp_get_num_threads(), static_cast<int>(p.size()));
     }
     if (error_) return;
-    compute_forces(true);
-    kick(0.5 * dt);
+    compute_forces(true, &half);
 #pragma omp single
     {
       kuen_.apply(p, dt);
@@ -151,28 +152,29 @@ class Stepper final : public StepperBase<D> {
   }
 
   // Half kick of velocity Verlet, with PFC's optional local damping. A locked
-  // rotation (Kuen's Model 1) keeps omega at zero.
-  void kick(double h) {
-    auto& p = s_.particles;
-    const int n = static_cast<int>(p.size());
-    const Vec g = s_.gravity;
-    const double alpha = s_.contact.local_damping;
-    const bool rotate = !s_.contact.lock_rotation;
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      Vec f = p.f[i] + p.m[i] * g;
-      Rot t = p.t[i];
-      if (alpha > 0.0) {
-        for (int d = 0; d < D; ++d) f[d] -= alpha * std::abs(f[d]) * sign(p.v[i][d]);
-        if constexpr (D == 2) {
-          t -= alpha * std::abs(t) * sign(p.w[i]);
-        } else {
-          for (int d = 0; d < 3; ++d) t[d] -= alpha * std::abs(t[d]) * sign(p.w[i][d]);
-        }
+  // rotation (Kuen's Model 1) keeps omega at zero. Applied particle by
+  // particle inside other passes (drift; wall forces), to save passes.
+  struct Kick {
+    Vec g;
+    double h, alpha;
+    bool rotate;
+  };
+  Kick kick_params(double h) const {
+    return {s_.gravity, h, s_.contact.local_damping, !s_.contact.lock_rotation};
+  }
+  TALUS_HOT static void kick_one(Particles<D>& p, int i, const Kick& k) {
+    Vec f = p.f[i] + p.m[i] * k.g;
+    Rot t = p.t[i];
+    if (k.alpha > 0.0) {
+      for (int d = 0; d < D; ++d) f[d] -= k.alpha * std::abs(f[d]) * sign(p.v[i][d]);
+      if constexpr (D == 2) {
+        t -= k.alpha * std::abs(t) * sign(p.w[i]);
+      } else {
+        for (int d = 0; d < 3; ++d) t[d] -= k.alpha * std::abs(t[d]) * sign(p.w[i][d]);
       }
-      p.v[i] += (h * p.inv_m[i]) * f;
-      if (rotate) p.w[i] += (h * p.inv_I[i]) * t;
     }
+    p.v[i] += (k.h * p.inv_m[i]) * f;
+    if (k.rotate) p.w[i] += (k.h * p.inv_I[i]) * t;
   }
   static double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
@@ -336,7 +338,9 @@ class Stepper final : public StepperBase<D> {
   }
 
   // `prepared`: counters, accumulators and buffers were set up by the caller.
-  void compute_forces(bool prepared = false) {
+  // `then_kick`: each particle gets this half kick as soon as its force is
+  // complete (in the pass that adds the wall forces).
+  void compute_forces(bool prepared = false, const Kick* then_kick = nullptr) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int n = static_cast<int>(p.size());
@@ -357,6 +361,7 @@ class Stepper final : public StepperBase<D> {
         p.contacts[i] = 0;
       }
       touching = scatter_pairs(0, np, p.f, p.t, p.contacts);
+      finish_particles(false, then_kick);
     } else {
       // Race-free: each thread scatters its contiguous chunk of pairs into its
       // own buffer, over the particle range that chunk touches (particles are
@@ -371,25 +376,10 @@ class Stepper final : public StepperBase<D> {
       }
       touching = scatter_pairs(buf.k0, buf.k1, buf.f, buf.t, buf.contacts);
 #pragma omp barrier
-#pragma omp for schedule(static)
-      for (int i = 0; i < n; ++i) {
-        Vec f = zero_of<Vec>();
-        Rot t = Space<D>::rot_zero();
-        int c = 0;
-        for (const auto& b : buffers_) {
-          if (i < b.lo || i > b.hi) continue;
-          f += b.f[i];
-          t += b.t[i];
-          c += b.contacts[i];
-        }
-        p.f[i] = f;
-        p.t[i] = t;
-        p.contacts[i] = c;
-      }
+      finish_particles(true, then_kick);
     }
 #pragma omp atomic
     pair_touching_ += touching;
-    wall_forces();
 #pragma omp barrier
 #pragma omp single
     {
@@ -491,7 +481,9 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
-  void wall_forces() {
+  // One pass over the particles once the pair forces are done: the sum of the
+  // per-thread buffers (`reduce`), the wall contacts, then the optional kick.
+  void finish_particles(bool reduce, const Kick* then_kick) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int n = static_cast<int>(p.size());
@@ -500,6 +492,20 @@ class Stepper final : public StepperBase<D> {
     int64_t touching = 0;
 #pragma omp for schedule(static)
     for (int i = 0; i < n; ++i) {
+      if (reduce) {
+        Vec f = zero_of<Vec>();
+        Rot t = Space<D>::rot_zero();
+        int c = 0;
+        for (const auto& b : buffers_) {
+          if (i < b.lo || i > b.hi) continue;
+          f += b.f[i];
+          t += b.t[i];
+          c += b.contacts[i];
+        }
+        p.f[i] = f;
+        p.t[i] = t;
+        p.contacts[i] = c;
+      }
       p.wall_contacts[i] = 0;
       for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
         const int prim = nl.wall_prim[k];
@@ -535,6 +541,7 @@ class Stepper final : public StepperBase<D> {
         acc[2 * w] -= f3;
         acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
       }
+      if (then_kick) kick_one(p, i, *then_kick);
     }
 #pragma omp atomic
     wall_touching_ += touching;
