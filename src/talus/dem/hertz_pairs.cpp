@@ -113,8 +113,7 @@ const Isa& isa() {
 
 // Gathers the rest of the block's state, computes it and adds the results to
 // the particles in pair order.
-void flush(Block& b, const HertzPairsInput& in, BlockFn fn, std::vector<Vec3>& f,
-           std::vector<Vec3>& t, std::vector<int>& contacts) {
+void flush(Block& b, const HertzPairsInput& in, BlockFn fn, const ForceTarget<3>& out) {
   const auto& p = *in.particles;
   for (int l = 0; l < b.n; ++l) {
     const int i = b.i[l], j = b.j[l];
@@ -144,14 +143,8 @@ void flush(Block& b, const HertzPairsInput& in, BlockFn fn, std::vector<Vec3>& f
   fn(b, in.dt);
   auto& shear = in.neighbours->pair_shear;
   for (int l = 0; l < b.n; ++l) {
-    const int i = b.i[l], j = b.j[l];
-    const Vec3 fl(b.fx[l], b.fy[l], b.fz[l]);
-    f[i] += fl;
-    f[j] -= fl;
-    t[i] += Vec3(b.tix[l], b.tiy[l], b.tiz[l]);
-    t[j] += Vec3(b.tjx[l], b.tjy[l], b.tjz[l]);
-    ++contacts[i];
-    ++contacts[j];
+    out.add(b.i[l], b.j[l], Vec3(b.fx[l], b.fy[l], b.fz[l]), Vec3(b.tix[l], b.tiy[l], b.tiz[l]),
+            Vec3(b.tjx[l], b.tjy[l], b.tjz[l]));
     shear[b.k[l]] = Vec3(b.sx[l], b.sy[l], b.sz[l]);
   }
   b.n = 0;
@@ -162,8 +155,7 @@ void flush(Block& b, const HertzPairsInput& in, BlockFn fn, std::vector<Vec3>& f
 const char* hertz_pairs_isa() { return isa().name; }
 
 int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size_t k1,
-                            std::vector<Vec3>& f, std::vector<Vec3>& t,
-                            std::vector<int>& contacts) {
+                            const ForceTarget<3>& out) {
   const auto& p = *in.particles;
   auto& nl = *in.neighbours;
   const auto& pairs = nl.pairs;
@@ -210,9 +202,9 @@ int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size
     const int touches = d2 >= rs * rs ? 0 : 1;  // as the scalar path (NaN counts as touching)
     b.n += touches;
     touching += touches;
-    if (b.n == kBlock) flush(b, in, fn, f, t, contacts);
+    if (b.n == kBlock) flush(b, in, fn, out);
   }
-  if (b.n > 0) flush(b, in, fn, f, t, contacts);
+  if (b.n > 0) flush(b, in, fn, out);
   return touching;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "talus/dem/contact/hertz_mindlin.hpp"
+#include "talus/dem/force_target.hpp"
 #include "talus/dem/neighbour_list.hpp"
 #include "talus/dem/particles.hpp"
 
@@ -24,11 +25,11 @@ struct HertzPairsInput {
   double dt;
 };
 
-// Forces of pairs [k0, k1) added into f, t, contacts (pair order); returns the
-// number of touching pairs. The shear history of each pair is updated, and
-// reset where the pair does not touch.
+// Forces of pairs [k0, k1) added into `out` (pair order); returns the number
+// of touching pairs. The shear history of each pair is updated, and reset
+// where the pair does not touch.
 int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size_t k1,
-                            std::vector<Vec3>& f, std::vector<Vec3>& t, std::vector<int>& contacts);
+                            const ForceTarget<3>& out);
 
 // Which instruction set the block loop uses on this CPU ("avx512f", "avx2" or
 // "sse2"), for reports.

@@ -206,22 +206,35 @@ void NeighbourList<D>::find_walls(const Particles<D>& p,
 
 template <int D>
 void NeighbourList<D>::carry_history(const Particles<D>&) {
-  pair_shear.assign(pairs.size(), zero_of<Vec>());
-  pair_roll.assign(pairs.size(), Space<D>::rot_zero());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const int oi = order_[pairs[k].i], oj = order_[pairs[k].j];
-    const int lo = std::min(oi, oj), hi = std::max(oi, oj);
-    for (int q = old_row_start_[lo]; q < old_row_start_[lo + 1]; ++q) {
-      const Pair& old = old_pairs_[old_rows_[q]];
-      if (old.i + old.j - lo != hi) continue;
-      // The spring is relative motion of i against j: swapping them flips it.
-      const double sign = old.i != oi ? -1.0 : 1.0;
-      pair_shear[k] = sign * old_pair_shear_[old_rows_[q]];
-      pair_roll[k] = sign * old_pair_roll_[old_rows_[q]];
-      break;
+  pair_shear.resize(pairs.size());
+  pair_roll.resize(pairs.size());
+  wall_history.assign(wall_prim.size(), ContactHistory<D>{});
+  // Chunks of pairs (and the walls) as OpenMP tasks, like the pair search:
+  // each new contact is looked up on its own, so any split gives the same lists.
+  const std::size_t np = pairs.size();
+  const int chunks = 8;
+  for (int t = 0; t < chunks; ++t) {
+#pragma omp task default(shared) firstprivate(t)
+    {
+      const std::size_t k0 = np * t / chunks, k1 = np * (t + 1) / chunks;
+      for (std::size_t k = k0; k < k1; ++k) {
+        pair_shear[k] = zero_of<Vec>();
+        pair_roll[k] = Space<D>::rot_zero();
+        const int oi = order_[pairs[k].i], oj = order_[pairs[k].j];
+        const int lo = std::min(oi, oj), hi = std::max(oi, oj);
+        for (int q = old_row_start_[lo]; q < old_row_start_[lo + 1]; ++q) {
+          const Pair& old = old_pairs_[old_rows_[q]];
+          if (old.i + old.j - lo != hi) continue;
+          // The spring is relative motion of i against j: swapping them flips it.
+          const double sign = old.i != oi ? -1.0 : 1.0;
+          pair_shear[k] = sign * old_pair_shear_[old_rows_[q]];
+          pair_roll[k] = sign * old_pair_roll_[old_rows_[q]];
+          break;
+        }
+      }
     }
   }
-  wall_history.assign(wall_prim.size(), ContactHistory<D>{});
+#pragma omp task default(shared)
   for (std::size_t i = 0; i + 1 < wall_start.size(); ++i) {
     const int oi = order_[i];
     for (int k = wall_start[i]; k < wall_start[i + 1]; ++k)
@@ -231,6 +244,7 @@ void NeighbourList<D>::carry_history(const Particles<D>&) {
           break;
         }
   }
+#pragma omp taskwait
 }
 
 template class NeighbourList<2>;
