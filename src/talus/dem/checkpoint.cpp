@@ -59,7 +59,8 @@ void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
   std::vector<typename Space<D>::Vec> shear, wshear;
   std::vector<typename Space<D>::Rot> roll, wroll;
   for (const auto& q : nl.pairs) pairs.push_back({q.i, q.j});
-  for (const auto& h : nl.pair_history) shear.push_back(h.shear), roll.push_back(h.roll);
+  shear = nl.pair_shear;
+  roll = nl.pair_roll;
   for (const auto& h : nl.wall_history) wshear.push_back(h.shear), wroll.push_back(h.roll);
   w.put(pairs), w.put(shear), w.put(roll), w.put(wshear), w.put(wroll);
   w.put(nl.skin());
@@ -86,13 +87,11 @@ void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
   nl.set_skin(r.get<double>());
   if (shear.size() != pairs.size() || wshear.size() != nl.wall_prim.size())
     throw InputError(where + "inconsistent contact tables");
+  if (roll.size() != pairs.size()) throw InputError(where + "inconsistent contact tables");
   nl.pairs.clear();
-  nl.pair_history.resize(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    nl.pairs.push_back(NeighbourList<D>::make_pair(s.particles, pairs[k].i, pairs[k].j));
-    nl.pair_history[k].shear = shear[k];
-    nl.pair_history[k].roll = roll[k];
-  }
+  for (const auto& q : pairs) nl.pairs.push_back({q.i, q.j});
+  nl.pair_shear = std::move(shear);
+  nl.pair_roll = std::move(roll);
   nl.wall_history.resize(wshear.size());
   for (std::size_t k = 0; k < wshear.size(); ++k) {
     nl.wall_history[k].shear = wshear[k];

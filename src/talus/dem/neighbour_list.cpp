@@ -16,7 +16,8 @@ void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primit
   // re-sort; carry_history finds each new contact's old one through the
   // permutation, in O(1) per contact.
   old_pairs_.swap(pairs);
-  old_pair_history_.swap(pair_history);
+  old_pair_shear_.swap(pair_shear);
+  old_pair_roll_.swap(pair_roll);
   old_wall_start_.swap(wall_start);
   old_wall_prim_.swap(wall_prim);
   old_wall_history_.swap(wall_history);
@@ -106,28 +107,51 @@ void NeighbourList<D>::find_pairs(const Particles<D>& p, double) {
   const int total = dims_[0] * dims_[1] * dims_[2];
   const int chunks = std::min(total, 16);
   std::vector<std::vector<Pair>> found(chunks);
+  const Vec* x = p.x.data();
+  const double* r = p.r.data();
+  const int* start = cell_start_.data();
+  const double skin = skin_;
   for (int t = 0; t < chunks; ++t) {
 #pragma omp task default(shared) firstprivate(t)
     {
       auto& out = found[t];
+      std::size_t m = 0;  // pairs found; out is kept larger and cut at the end
       const int c0 = static_cast<int>(static_cast<int64_t>(total) * t / chunks);
       const int c1 = static_cast<int>(static_cast<int64_t>(total) * (t + 1) / chunks);
+      int lo[27], hi[27];
       for (int c = c0; c < c1; ++c) {
+        if (start[c] == start[c + 1]) continue;  // most cells of a spreading flow are empty
         const int cx = c % dims_[0], cy = (c / dims_[0]) % dims_[1], cz = c / (dims_[0] * dims_[1]);
-        for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
-          for (const auto& s : stencil) {
-            const int nx = cx + s[0], ny = cy + s[1], nz = cz + s[2];
-            if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2])
-              continue;
-            const int nc = (nz * dims_[1] + ny) * dims_[0] + nx;
-            const int j0 = nc == c ? i + 1 : cell_start_[nc];
-            for (int j = j0; j < cell_start_[nc + 1]; ++j) {
-              const double cut = p.r[i] + p.r[j] + skin_;
-              if ((p.x[i] - p.x[j]).squaredNorm() < cut * cut) out.push_back(make_pair(p, i, j));
+        // The particle ranges of the stencil's cells inside the grid; the
+        // first entry is the cell itself, searched from i + 1.
+        int ranges = 0, candidates = 0;
+        for (const auto& s : stencil) {
+          const int nx = cx + s[0], ny = cy + s[1], nz = cz + s[2];
+          if (nx < 0 || ny < 0 || nz < 0 || nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2])
+            continue;
+          const int nc = (nz * dims_[1] + ny) * dims_[0] + nx;
+          lo[ranges] = start[nc];
+          hi[ranges] = start[nc + 1];
+          candidates += hi[ranges] - lo[ranges];
+          ++ranges;
+        }
+        for (int i = start[c]; i < start[c + 1]; ++i) {
+          if (out.size() < m + candidates) out.resize(2 * (m + candidates) + 64);
+          Pair* o = out.data();
+          const Vec xi = x[i];
+          const double ri = r[i];
+          for (int q = 0; q < ranges; ++q) {
+            // Every candidate is written; only a neighbour advances m (the
+            // test is close to random, a branch would mispredict).
+            for (int j = q == 0 ? i + 1 : lo[q]; j < hi[q]; ++j) {
+              const double cut = ri + r[j] + skin;
+              o[m] = {i, j};
+              m += (xi - x[j]).squaredNorm() < cut * cut ? 1 : 0;
             }
           }
         }
       }
+      out.resize(m);
     }
   }
 #pragma omp taskwait
@@ -182,23 +206,35 @@ void NeighbourList<D>::find_walls(const Particles<D>& p,
 
 template <int D>
 void NeighbourList<D>::carry_history(const Particles<D>&) {
-  pair_history.assign(pairs.size(), ContactHistory<D>{});
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const int oi = order_[pairs[k].i], oj = order_[pairs[k].j];
-    const int lo = std::min(oi, oj), hi = std::max(oi, oj);
-    for (int q = old_row_start_[lo]; q < old_row_start_[lo + 1]; ++q) {
-      const Pair& old = old_pairs_[old_rows_[q]];
-      if (old.i + old.j - lo != hi) continue;
-      // The spring is relative motion of i against j: swapping them flips it.
-      pair_history[k] = old_pair_history_[old_rows_[q]];
-      if (old.i != oi) {
-        pair_history[k].shear = -pair_history[k].shear;
-        pair_history[k].roll = -pair_history[k].roll;
+  pair_shear.resize(pairs.size());
+  pair_roll.resize(pairs.size());
+  wall_history.assign(wall_prim.size(), ContactHistory<D>{});
+  // Chunks of pairs (and the walls) as OpenMP tasks, like the pair search:
+  // each new contact is looked up on its own, so any split gives the same lists.
+  const std::size_t np = pairs.size();
+  const int chunks = 8;
+  for (int t = 0; t < chunks; ++t) {
+#pragma omp task default(shared) firstprivate(t)
+    {
+      const std::size_t k0 = np * t / chunks, k1 = np * (t + 1) / chunks;
+      for (std::size_t k = k0; k < k1; ++k) {
+        pair_shear[k] = zero_of<Vec>();
+        pair_roll[k] = Space<D>::rot_zero();
+        const int oi = order_[pairs[k].i], oj = order_[pairs[k].j];
+        const int lo = std::min(oi, oj), hi = std::max(oi, oj);
+        for (int q = old_row_start_[lo]; q < old_row_start_[lo + 1]; ++q) {
+          const Pair& old = old_pairs_[old_rows_[q]];
+          if (old.i + old.j - lo != hi) continue;
+          // The spring is relative motion of i against j: swapping them flips it.
+          const double sign = old.i != oi ? -1.0 : 1.0;
+          pair_shear[k] = sign * old_pair_shear_[old_rows_[q]];
+          pair_roll[k] = sign * old_pair_roll_[old_rows_[q]];
+          break;
+        }
       }
-      break;
     }
   }
-  wall_history.assign(wall_prim.size(), ContactHistory<D>{});
+#pragma omp task default(shared)
   for (std::size_t i = 0; i + 1 < wall_start.size(); ++i) {
     const int oi = order_[i];
     for (int k = wall_start[i]; k < wall_start[i + 1]; ++k)
@@ -208,6 +244,7 @@ void NeighbourList<D>::carry_history(const Particles<D>&) {
           break;
         }
   }
+#pragma omp taskwait
 }
 
 template class NeighbourList<2>;

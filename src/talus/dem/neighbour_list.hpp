@@ -15,18 +15,17 @@ template <int D>
 class NeighbourList {
  public:
   using Vec = typename Space<D>::Vec;
-  // r_eff and m_eff are constant for a pair: computed once per build.
+  // Eight bytes a pair: the pair loop streams this list every step, so R* and
+  // m* are recomputed per touching contact rather than stored.
   struct Pair {
     int i, j;
-    double r_eff, m_eff;
   };
-  static Pair make_pair(const Particles<D>& p, int i, int j) {
-    return {i, j, p.r[i] * p.r[j] / (p.r[i] + p.r[j]), p.m[i] * p.m[j] / (p.m[i] + p.m[j])};
-  }
 
-  // Particle pairs closer than r_i + r_j + skin; pair_history is parallel to pairs.
+  // Particle pairs closer than r_i + r_j + skin. Their history is split by
+  // field, parallel to pairs: a law without rolling never touches pair_roll.
   std::vector<Pair> pairs;
-  std::vector<ContactHistory<D>> pair_history;
+  std::vector<Vec> pair_shear;
+  std::vector<typename Space<D>::Rot> pair_roll;
   // Per particle (CSR): wall primitives closer than r + skin, with their history.
   std::vector<int> wall_start, wall_prim;
   std::vector<ContactHistory<D>> wall_history;
@@ -50,7 +49,9 @@ class NeighbourList {
   // The lists of the previous build, and its pairs grouped by their lower
   // particle index (CSR), to carry contact history over.
   std::vector<Pair> old_pairs_;
-  std::vector<ContactHistory<D>> old_pair_history_, old_wall_history_;
+  std::vector<Vec> old_pair_shear_;
+  std::vector<typename Space<D>::Rot> old_pair_roll_;
+  std::vector<ContactHistory<D>> old_wall_history_;
   std::vector<int> old_wall_start_, old_wall_prim_, old_row_start_, old_rows_;
   std::vector<int> order_;  // new index k held old index order_[k]
 

@@ -41,7 +41,9 @@ struct Particles {
     wall_contacts.push_back(0);
   }
 
-  // Reorders every field: new index k holds old index order[k].
+  // Reorders every field: new index k holds old index order[k]. The fields
+  // are OpenMP tasks: inside a parallel region (the neighbour build runs in
+  // `omp single`) the other threads take some.
   void permute(const std::vector<int>& order) {
     apply(order, x);
     apply(order, v);
@@ -56,15 +58,18 @@ struct Particles {
     apply(order, id);
     apply(order, contacts);
     apply(order, wall_contacts);
+#pragma omp taskwait
   }
 
  private:
   template <class T>
   static void apply(const std::vector<int>& order, std::vector<T>& a) {
-    std::vector<T> out;
-    out.reserve(order.size());
-    for (int k : order) out.push_back(a[k]);
-    a.swap(out);
+#pragma omp task default(shared)
+    {
+      std::vector<T> out(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k) out[k] = a[order[k]];
+      a.swap(out);
+    }
   }
 };
 

@@ -11,6 +11,7 @@ namespace talus::dem {
 struct NoRolling {
   static constexpr const char* name = "none";
   static constexpr bool needs_inertia = false;
+  static constexpr bool has_torque = false;  // never writes the rolling history
   struct Coeffs {};
   static Coeffs make(const ContactParams&, const PairCoefficients&) { return {}; }
   template <int D>
@@ -24,6 +25,7 @@ struct NoRolling {
 struct EpsdRolling {
   static constexpr const char* name = "epsd";
   static constexpr bool needs_inertia = true;
+  static constexpr bool has_torque = true;
   struct Coeffs {
     double mu_r = 0, stiffness_factor = 2.25, eta = 0.3;
   };
@@ -60,6 +62,7 @@ struct EpsdRolling {
 template <class Law, class Rolling>
 struct ComposedContact {
   static constexpr bool needs_inertia = Rolling::needs_inertia;
+  static constexpr bool has_rolling = Rolling::has_torque;
   struct Coeffs {
     typename Law::Coeffs law;
     typename Rolling::Coeffs roll;

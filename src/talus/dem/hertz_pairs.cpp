@@ -1,0 +1,211 @@
+#include "talus/dem/hertz_pairs.hpp"
+
+#include <cmath>
+
+namespace talus::dem {
+
+namespace {
+
+// Touching pairs per block: a multiple of the widest vector (8 doubles), small
+// enough that the block stays in L1.
+constexpr int kBlock = 32;
+
+// Structure of arrays of one block: inputs gathered from the particles and the
+// pair list, results scattered back. Coefficients are per lane, as the
+// material pair may change from pair to pair.
+struct alignas(64) Block {
+  double dx[kBlock], dy[kBlock], dz[kBlock], d2[kBlock];  // x_i - x_j
+  double ri[kBlock], rj[kBlock], mi[kBlock], mj[kBlock];
+  double vx[kBlock], vy[kBlock], vz[kBlock];  // v_i - v_j
+  double wix[kBlock], wiy[kBlock], wiz[kBlock], wjx[kBlock], wjy[kBlock], wjz[kBlock];
+  double sx[kBlock], sy[kBlock], sz[kBlock];  // shear displacement: in, then out
+  double e_star[kBlock], g_star[kBlock], mu[kBlock], damp_n[kBlock], t_ratio[kBlock];
+  double fx[kBlock], fy[kBlock], fz[kBlock];  // force on i
+  double tix[kBlock], tiy[kBlock], tiz[kBlock], tjx[kBlock], tjy[kBlock], tjz[kBlock];
+  int i[kBlock], j[kBlock];
+  std::size_t k[kBlock];
+  int n = 0;
+};
+
+// pair_force + HertzMindlin::compute of stepper.cpp, lane by lane; the
+// comments name the scalar expressions each line reproduces.
+TALUS_HOT void block_body(Block& b, double dt) {
+  const int n = b.n;
+#pragma omp simd
+  for (int l = 0; l < n; ++l) {
+    const double dist = std::sqrt(b.d2[l]);
+    const double inv = 1.0 / dist;
+    const double nx = b.dx[l] * inv, ny = b.dy[l] * inv, nz = b.dz[l] * inv;
+    const double overlap = (b.ri[l] + b.rj[l]) - dist;
+    const double ci = b.ri[l] - 0.5 * overlap, cj = b.rj[l] - 0.5 * overlap;
+    const double r_eff = b.ri[l] * b.rj[l] / (b.ri[l] + b.rj[l]);
+    const double m_eff = b.mi[l] * b.mj[l] / (b.mi[l] + b.mj[l]);
+    // vn = vrel.n; vt = vrel - vn n - (ci w_i + cj w_j) x n
+    const double vn = (b.vx[l] * nx + b.vy[l] * ny) + b.vz[l] * nz;
+    const double wx = ci * b.wix[l] + cj * b.wjx[l];
+    const double wy = ci * b.wiy[l] + cj * b.wjy[l];
+    const double wz = ci * b.wiz[l] + cj * b.wjz[l];
+    const double vtx = (b.vx[l] - vn * nx) - (wy * nz - wz * ny);
+    const double vty = (b.vy[l] - vn * ny) - (wz * nx - wx * nz);
+    const double vtz = (b.vz[l] - vn * nz) - (wx * ny - wy * nx);
+    // HertzMindlin::compute
+    const double sqrt_rd = std::sqrt(r_eff * overlap);
+    const double st = 8.0 * b.g_star[l] * sqrt_rd;
+    const double kn = (4.0 / 3.0) * b.e_star[l] * sqrt_rd;
+    const double gn = b.damp_n[l] * std::sqrt(m_eff * sqrt_rd);
+    const double gt = gn * b.t_ratio[l];
+    const double fn = kn * overlap - gn * vn;
+    double sx = b.sx[l] + vtx * dt, sy = b.sy[l] + vty * dt, sz = b.sz[l] + vtz * dt;
+    const double sn = (sx * nx + sy * ny) + sz * nz;
+    sx = sx - sn * nx;
+    sy = sy - sn * ny;
+    sz = sz - sn * nz;
+    const double cap = b.mu[l] * std::abs(fn);
+    const double spring2 = st * st * ((sx * sx + sy * sy) + sz * sz);
+    const bool sliding = spring2 > cap * cap;
+    const double scale = cap / std::sqrt(spring2);  // used only while sliding
+    sx = sliding ? sx * scale : sx;
+    sy = sliding ? sy * scale : sy;
+    sz = sliding ? sz * scale : sz;
+    const double ftx = sliding ? -st * sx : -st * sx - gt * vtx;
+    const double fty = sliding ? -st * sy : -st * sy - gt * vty;
+    const double ftz = sliding ? -st * sz : -st * sz - gt * vtz;
+    b.sx[l] = sx;
+    b.sy[l] = sy;
+    b.sz[l] = sz;
+    // f = fn n + ft; torque tq = -n x ft at lever arms ci, cj
+    b.fx[l] = fn * nx + ftx;
+    b.fy[l] = fn * ny + fty;
+    b.fz[l] = fn * nz + ftz;
+    const double tqx = -(ny * ftz - nz * fty);
+    const double tqy = -(nz * ftx - nx * ftz);
+    const double tqz = -(nx * fty - ny * ftx);
+    b.tix[l] = ci * tqx;
+    b.tiy[l] = ci * tqy;
+    b.tiz[l] = ci * tqz;
+    b.tjx[l] = cj * tqx;
+    b.tjy[l] = cj * tqy;
+    b.tjz[l] = cj * tqz;
+  }
+}
+
+// The same loop compiled for three instruction sets. None of them has FMA
+// enabled (and the build sets -ffp-contract=off), so all give the same bits.
+__attribute__((target("avx512f"))) void block_avx512(Block& b, double dt) { block_body(b, dt); }
+__attribute__((target("avx2"))) void block_avx2(Block& b, double dt) { block_body(b, dt); }
+void block_sse2(Block& b, double dt) { block_body(b, dt); }
+
+using BlockFn = void (*)(Block&, double);
+struct Isa {
+  BlockFn fn;
+  const char* name;
+};
+Isa pick_isa() {
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f")) return {block_avx512, "avx512f"};
+  if (__builtin_cpu_supports("avx2")) return {block_avx2, "avx2"};
+  return {block_sse2, "sse2"};
+}
+const Isa& isa() {
+  static const Isa chosen = pick_isa();
+  return chosen;
+}
+
+// Gathers the rest of the block's state, computes it and adds the results to
+// the particles in pair order.
+void flush(Block& b, const HertzPairsInput& in, BlockFn fn, const ForceTarget<3>& out) {
+  const auto& p = *in.particles;
+  for (int l = 0; l < b.n; ++l) {
+    const int i = b.i[l], j = b.j[l];
+    b.mi[l] = p.m[i];
+    b.mj[l] = p.m[j];
+    const Vec3 vrel = p.v[i] - p.v[j];
+    b.vx[l] = vrel.x();
+    b.vy[l] = vrel.y();
+    b.vz[l] = vrel.z();
+    b.wix[l] = p.w[i].x();
+    b.wiy[l] = p.w[i].y();
+    b.wiz[l] = p.w[i].z();
+    b.wjx[l] = p.w[j].x();
+    b.wjy[l] = p.w[j].y();
+    b.wjz[l] = p.w[j].z();
+  }
+  if (in.n_materials > 1) {
+    for (int l = 0; l < b.n; ++l) {
+      const auto& c = in.coeffs[p.material[b.i[l]] * in.n_materials + p.material[b.j[l]]];
+      b.e_star[l] = c.h.e_star;
+      b.g_star[l] = c.h.g_star;
+      b.mu[l] = c.h.mu;
+      b.damp_n[l] = c.damp_n;
+      b.t_ratio[l] = c.tangential_ratio;
+    }
+  }
+  fn(b, in.dt);
+  auto& shear = in.neighbours->pair_shear;
+  for (int l = 0; l < b.n; ++l) {
+    out.add(b.i[l], b.j[l], Vec3(b.fx[l], b.fy[l], b.fz[l]), Vec3(b.tix[l], b.tiy[l], b.tiz[l]),
+            Vec3(b.tjx[l], b.tjy[l], b.tjz[l]));
+    shear[b.k[l]] = Vec3(b.sx[l], b.sy[l], b.sz[l]);
+  }
+  b.n = 0;
+}
+
+}  // namespace
+
+const char* hertz_pairs_isa() { return isa().name; }
+
+int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size_t k1,
+                            const ForceTarget<3>& out) {
+  const auto& p = *in.particles;
+  auto& nl = *in.neighbours;
+  const auto& pairs = nl.pairs;
+  auto& shear = nl.pair_shear;
+  const BlockFn fn = isa().fn;
+  thread_local Block b;
+  b.n = 0;
+  const bool one_material = in.n_materials == 1;
+  if (one_material) {
+    const auto& c = in.coeffs[0];
+    for (int l = 0; l < kBlock; ++l) {
+      b.e_star[l] = c.h.e_star;
+      b.g_star[l] = c.h.g_star;
+      b.mu[l] = c.h.mu;
+      b.damp_n[l] = c.damp_n;
+      b.t_ratio[l] = c.tangential_ratio;
+    }
+  }
+  // Whether a pair touches is close to random from one pair to the next, so
+  // the filter has no branch: every pair is written into the next free slot,
+  // which only a touching pair keeps. Its shear moves into the block and the
+  // list's entry is zeroed (a pair that does not touch has no history); the
+  // block writes the new shear back.
+  int64_t touching = 0;
+  for (std::size_t k = k0; k < k1; ++k) {
+    const int i = pairs[k].i, j = pairs[k].j;
+    const Vec3 d = p.x[i] - p.x[j];
+    const double d2 = d.squaredNorm();
+    const double rs = p.r[i] + p.r[j];
+    const int l = b.n;
+    b.i[l] = i;
+    b.j[l] = j;
+    b.k[l] = k;
+    b.dx[l] = d.x();
+    b.dy[l] = d.y();
+    b.dz[l] = d.z();
+    b.d2[l] = d2;
+    b.ri[l] = p.r[i];
+    b.rj[l] = p.r[j];
+    b.sx[l] = shear[k].x();
+    b.sy[l] = shear[k].y();
+    b.sz[l] = shear[k].z();
+    shear[k] = zero_of<Vec3>();
+    const int touches = d2 >= rs * rs ? 0 : 1;  // as the scalar path (NaN counts as touching)
+    b.n += touches;
+    touching += touches;
+    if (b.n == kBlock) flush(b, in, fn, out);
+  }
+  if (b.n > 0) flush(b, in, fn, out);
+  return touching;
+}
+
+}  // namespace talus::dem
