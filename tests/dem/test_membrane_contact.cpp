@@ -105,7 +105,11 @@ TEST(MembraneContact, OneNormalForceOverVertexEdgeAndFace) {
     std::vector<TriangleContact> contacts;
     select_contacts(m, m.vertices, g.x, R, all_triangles(m), contacts);
     ASSERT_EQ(contacts.size(), 1u) << "spot " << k;
-    EXPECT_EQ(contacts[0].kind, kinds[k]);
+    // Over the edge's midpoint round-off may put the closest point just inside
+    // one of the two triangles (a face contact): same point, same force.
+    if (k != 1) {
+      EXPECT_EQ(contacts[0].kind, kinds[k]);
+    }
     std::vector<Vec3> f(m.num_vertices(), Vec3::Zero());
     ContactMemory mem;
     mem.begin_step();
@@ -116,6 +120,56 @@ TEST(MembraneContact, OneNormalForceOverVertexEdgeAndFace) {
     Vec3 sum = gf.force;
     for (const auto& fi : f) sum += fi;
     EXPECT_LT(sum.norm(), 1e-15 * expected);
+  }
+}
+
+// On a convex mesh the classification is robust: a grain radially outside an
+// edge midpoint touches both triangles at the edge, one outside a vertex all
+// triangles around it, and one outside a face centre only that face. One
+// contact each, of that kind, with the Hertz force.
+TEST(MembraneContact, PriorityOnAConvexMesh) {
+  const Mesh m = geodesic_sphere(0.02, 4);
+  const double R = 2e-3, delta = 1e-5;
+  const auto c = coeffs(0.5);
+  const double expected = 4.0 / 3.0 * c.h.e_star * std::sqrt(R) * std::pow(delta, 1.5);
+  const Edge& e = m.edges[17];
+  const auto& t = m.triangles[e.t0];
+  const int v = e.a;
+  const Vec3 spots[3] = {m.vertices[v], 0.5 * (m.vertices[e.a] + m.vertices[e.b]),
+                         (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0};
+  const Feature kinds[3] = {Feature::Vertex, Feature::Edge, Feature::Face};
+  const int around_v = m.vertex_triangle_start[v + 1] - m.vertex_triangle_start[v];
+  const int raw_expected[3] = {around_v, 2, 1};
+  const std::vector<Vec3> vel(m.num_vertices(), Vec3::Zero());
+  for (int k = 0; k < 3; ++k) {
+    Grain g;
+    // Outwards: radial at the vertex and at the edge midpoint (the chord's
+    // perpendicular bisector), the face normal over the centroid.
+    const Vec3 face_normal = (m.vertices[t[1]] - m.vertices[t[0]])
+                                 .cross(m.vertices[t[2]] - m.vertices[t[0]])
+                                 .normalized();
+    const Vec3 out_dir = k == 2 ? face_normal : spots[k].normalized();
+    g.x = spots[k] + (R - delta) * out_dir;
+    g.radius = R;
+    g.mass = 1e-5;
+    int raw = 0;
+    for (const auto& tri : m.triangles)
+      raw += (closest_on_triangle(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]], g.x)
+                  .point -
+              g.x)
+                 .norm() < R;
+    EXPECT_EQ(raw, raw_expected[k]) << "spot " << k;
+    std::vector<TriangleContact> contacts;
+    select_contacts(m, m.vertices, g.x, R, all_triangles(m), contacts);
+    ASSERT_EQ(contacts.size(), 1u) << "spot " << k;
+    EXPECT_EQ(contacts[0].kind, kinds[k]);
+    std::vector<Vec3> f(m.num_vertices(), Vec3::Zero());
+    ContactMemory mem;
+    mem.begin_step();
+    const GrainForce gf =
+        grain_membrane_forces(m, m.vertices, vel, f, 0, g, contacts, c, 1e-6, mem);
+    EXPECT_NEAR(gf.force.norm(), expected, 1e-9 * expected);
+    EXPECT_NEAR(gf.force.normalized().dot(out_dir), 1.0, 1e-12);
   }
 }
 
@@ -161,14 +215,15 @@ TEST(MembraneContact, MomentumIsConserved) {
   EXPECT_GT(touching, 100);
 }
 
-// A grain held at a fixed overlap and moved slowly over a pinned sheet while it
-// sticks (mu = 10): the tangential spring grows as v t, so the tangential force
-// is (2/3) k_t v t + gamma_t sqrt(m k_t) v (ViscoelasticHertz), across several
-// triangle boundaries. Dropping the spring at a boundary would lose it all.
+// A grain held at a fixed overlap and moved over a pinned sheet while it
+// sticks (mu = 1000, so the Coulomb cap is never reached): the tangential spring
+// grows as v t, so the tangential force is (2/3) k_t v t + gamma_t sqrt(m k_t) v
+// (ViscoelasticHertz), across several triangle boundaries. Dropping the spring
+// at a boundary would lose what was built before it.
 TEST(MembraneContact, FrictionSpringFollowsTheContactAcrossTriangles) {
-  const double s = 1.33e-3, R = 2e-3, delta = 5e-6, speed = 1e-3, dt = 1e-5;
+  const double s = 1.33e-3, R = 2e-3, delta = 5e-6, speed = 1e-3, dt = 1e-3;
   const Mesh m = flat_sheet(12, 12, s);
-  const auto c = coeffs(10.0);
+  const auto c = coeffs(1000.0);
   const std::vector<Vec3> vel(m.num_vertices(), Vec3::Zero());
   Grain g;
   g.radius = R;
@@ -179,7 +234,7 @@ TEST(MembraneContact, FrictionSpringFollowsTheContactAcrossTriangles) {
   ContactMemory mem;
   std::vector<TriangleContact> contacts;
   std::vector<int> triangles_seen;
-  const int steps = 400;  // 4 mm: three to four triangle widths
+  const int steps = 4000;  // 4 mm: three to four triangle widths
   GrainForce gf;
   for (int step = 0; step < steps; ++step) {
     g.x = start + (step * dt) * g.v;

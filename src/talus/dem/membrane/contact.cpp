@@ -48,33 +48,52 @@ void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& cent
     if (p.kind == Feature::Edge) c.feature = mesh.triangle_edges[t][p.corner];
     out.push_back(c);
   }
-  // Highest priority among the contacts on triangle t (0: none).
-  auto priority_on = [&](int t) {
-    int best = 0;
+  // Distances equal to within round-off, and contact points that are one.
+  const double same_distance = 1e-10 * radius, same_point = 1e-3 * radius;
+  const TriangleContact* none = nullptr;
+  auto hit_on = [&](int t) {  // a triangle has at most one closest point
     for (const auto& c : out)
-      if (c.triangle == t) best = std::max(best, static_cast<int>(c.kind));
-    return best;
+      if (c.triangle == t) return &c;
+    return none;
+  };
+  // A vertex or edge contact is dropped when a triangle that contains the
+  // vertex or edge has a higher-priority contact (the spec's rule) or one that
+  // is closer: the feature's point is then not a local minimum of the distance
+  // to the mesh, only a non-closest point of a patch whose closest point is
+  // counted elsewhere. (On a flat sheet, a grain just beside a vertex on an
+  // edge line also overlaps the edges at 60 degrees in the neighbouring
+  // triangles, with equal priority; the priority rule alone counts those again.)
+  auto outranked_by = [&](const TriangleContact& c, int t) {
+    if (t == c.triangle) return false;
+    const TriangleContact* h = hit_on(t);
+    return h && (h->kind > c.kind || h->distance < c.distance - same_distance);
   };
   std::vector<TriangleContact> kept;
   for (const auto& c : out) {
-    const int mine = static_cast<int>(c.kind);
     bool outranked = false;
     if (c.kind == Feature::Edge) {
       const Edge& e = mesh.edges[c.feature];
-      outranked = priority_on(e.t0) > mine || (e.t1 >= 0 && priority_on(e.t1) > mine);
+      outranked = outranked_by(c, e.t0) || (e.t1 >= 0 && outranked_by(c, e.t1));
     } else if (c.kind == Feature::Vertex) {
       for (int k = mesh.vertex_triangle_start[c.feature];
            k < mesh.vertex_triangle_start[c.feature + 1] && !outranked; ++k)
-        outranked = priority_on(mesh.vertex_triangle_list[k]) > mine;
+        outranked = outranked_by(c, mesh.vertex_triangle_list[k]);
     }
-    if (outranked) continue;
-    // One force per shared vertex or edge.
-    const bool seen = std::any_of(kept.begin(), kept.end(), [&](const TriangleContact& k) {
-      return k.kind == c.kind && k.feature == c.feature;
-    });
-    if (!seen) kept.push_back(c);
+    if (!outranked) kept.push_back(c);
   }
-  out.swap(kept);
+  // One force per shared vertex or edge, and per contact point: near a
+  // vertex, round-off may report the same point as a vertex, edge or face.
+  std::stable_sort(kept.begin(), kept.end(), [](const TriangleContact& a, const TriangleContact& b) {
+    return a.distance < b.distance;
+  });
+  out.clear();
+  for (const auto& c : kept) {
+    const bool seen = std::any_of(out.begin(), out.end(), [&](const TriangleContact& k) {
+      return (k.kind == c.kind && k.feature == c.feature) ||
+             (k.point - c.point).squaredNorm() < same_point * same_point;
+    });
+    if (!seen) out.push_back(c);
+  }
 }
 
 namespace {

@@ -5,6 +5,9 @@
 // priority face > edge > vertex of Hu et al. (2013) a vertex or edge contact
 // is dropped when a triangle sharing that vertex or edge has a higher-priority
 // contact, and a vertex or edge shared by several triangles gives one force.
+// One addition (see select_contacts): it is also dropped when such a triangle
+// has a closer contact, i.e. only local minima of the distance to the mesh
+// count; the priority rule alone double-counts on flat sheets.
 // The membrane velocity at the contact point is interpolated with the
 // barycentric weights w_i, and the vertices get -w_i F_c (sum w_i = 1, so
 // momentum is conserved to round-off).
