@@ -250,7 +250,8 @@ TEST(MembraneContact, FrictionSpringFollowsTheContactAcrossTriangles) {
       std::unique(triangles_seen.begin(), triangles_seen.end()) - triangles_seen.begin();
   EXPECT_GE(distinct, 3);
   const double kt = 32.0 / 3.0 * c.h.g_star * std::sqrt(R * delta);
-  const double expected = 2.0 / 3.0 * kt * speed * steps * dt + 0.3 * std::sqrt(g.mass * kt) * speed;
+  const double expected =
+      2.0 / 3.0 * kt * speed * steps * dt + 0.3 * std::sqrt(g.mass * kt) * speed;
   const Vec3 ft = gf.force - gf.force.dot(Vec3::UnitZ()) * Vec3::UnitZ();
   EXPECT_NEAR(ft.norm(), expected, 1e-9 * expected);
   EXPECT_NEAR(ft.normalized().dot(-dir), 1.0, 1e-12);

@@ -53,7 +53,8 @@ TEST(MembraneForces, StretchedSpringFollowsHooke) {
   const std::vector<Edge> e{{0, 1}};
   const std::vector<double> rest{1.0e-3}, mass{1e-5, 2e-5};
   const double k = 324.8;
-  std::vector<Vec3> x{Vec3(0.3e-3, 0.4e-3, 1.2e-3), Vec3::Zero()}, v(2, Vec3::Zero()), f(2, Vec3::Zero());
+  std::vector<Vec3> x{Vec3(0.3e-3, 0.4e-3, 1.2e-3), Vec3::Zero()}, v(2, Vec3::Zero()),
+      f(2, Vec3::Zero());
   const Vec3 dir = x[0].normalized();  // |x0| = 1.3 mm: stretched by 0.3 mm
   add_stretching_forces(e, rest, k, 0.15, x, v, mass, f);
   const Vec3 expected = -k * (x[0].norm() - 1.0e-3) * dir;

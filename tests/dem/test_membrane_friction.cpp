@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "talus/dem/contact/pair_coefficients.hpp"
@@ -81,6 +82,9 @@ DragResult drag(const Vec3& start, const Vec3& dir, double mu) {
 // round-off may move it. Friction: mu m g within 0.1 % at every step.
 void expect_constant(const DragResult& r, double mu) {
   const double R = 2e-3, m = 2000 * 4.0 / 3.0 * M_PI * R * R * R, weight = m * 9.81;
+  std::printf(
+      "height - static height in [%.3g, %.3g] m; friction in [%.9g, %.9g] N, mu m g = %.9g N\n",
+      r.z_min, r.z_max, r.f_min, r.f_max, mu * weight);
   EXPECT_LT(std::max(std::abs(r.z_min), std::abs(r.z_max)), 4e-9);
   EXPECT_NEAR(r.f_min, mu * weight, 1e-3 * mu * weight);
   EXPECT_NEAR(r.f_max, mu * weight, 1e-3 * mu * weight);

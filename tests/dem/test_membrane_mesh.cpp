@@ -185,4 +185,3 @@ TEST(MembraneMesh, StlRoundTripMergesVertices) {
   EXPECT_EQ(outward_fraction(m, Vec3::Zero()), 1.0);
   std::remove(path.c_str());
 }
-

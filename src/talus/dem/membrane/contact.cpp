@@ -83,9 +83,9 @@ void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& cent
   }
   // One force per shared vertex or edge, and per contact point: near a
   // vertex, round-off may report the same point as a vertex, edge or face.
-  std::stable_sort(kept.begin(), kept.end(), [](const TriangleContact& a, const TriangleContact& b) {
-    return a.distance < b.distance;
-  });
+  std::stable_sort(
+      kept.begin(), kept.end(),
+      [](const TriangleContact& a, const TriangleContact& b) { return a.distance < b.distance; });
   out.clear();
   for (const auto& c : kept) {
     const bool seen = std::any_of(out.begin(), out.end(), [&](const TriangleContact& k) {
@@ -110,8 +110,8 @@ void ContactMemory::begin_step() {
   for (auto& e : previous_) e.continued = false;
 }
 
-void ContactMemory::springs(int64_t grain, std::span<const TriangleContact> contacts,
-                            double radius, std::vector<ContactHistory<3>>& out) {
+void ContactMemory::springs(int64_t grain, std::span<const TriangleContact> contacts, double radius,
+                            std::vector<ContactHistory<3>>& out) {
   out.assign(contacts.size(), ContactHistory<3>{});
   auto lo = std::lower_bound(previous_.begin(), previous_.end(), grain,
                              [](const Entry& e, int64_t g) { return e.grain < g; });
@@ -173,7 +173,8 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
     kin.r_eff = g.radius;
     kin.m_eff = g.mass;
     kin.inertia_eff = 0;
-    const Vec3 v_membrane = c.w[0] * v_mem[tri[0]] + c.w[1] * v_mem[tri[1]] + c.w[2] * v_mem[tri[2]];
+    const Vec3 v_membrane =
+        c.w[0] * v_mem[tri[0]] + c.w[1] * v_mem[tri[1]] + c.w[2] * v_mem[tri[2]];
     const Vec3 vrel = g.v - v_membrane;
     kin.vn = vrel.dot(kin.n);
     kin.vt = vrel - kin.vn * kin.n - (arm * g.w).cross(kin.n);

@@ -115,9 +115,8 @@ Membrane make_membrane(Mesh mesh, const MembraneParams& params) {
 
 void add_internal_forces(Membrane& m) {
   const auto& p = m.params;
-  add_stretching_forces(m.mesh.edges, m.rest.length,
-                        spring_constant(p.youngs_modulus, p.thickness), p.spring_damping, m.x, m.v,
-                        m.mass, m.f);
+  add_stretching_forces(m.mesh.edges, m.rest.length, spring_constant(p.youngs_modulus, p.thickness),
+                        p.spring_damping, m.x, m.v, m.mass, m.f);
   if (p.bending_elastic != 0 || p.bending_dissipative != 0)
     add_bending_forces(m.mesh.edges, m.rest.sin_half_angle, p.bending_elastic,
                        p.bending_dissipative, m.x, m.v, m.f);

@@ -278,9 +278,11 @@ Mesh geodesic_sphere(double radius, int frequency, const Vec3& centre) {
   // Icosahedron with vertices at the poles and two rings of five at z = +-1/sqrt 5.
   std::vector<Vec3> ico{Vec3(0, 0, 1), Vec3(0, 0, -1)};
   const double zr = 1.0 / std::sqrt(5.0), rr = 2.0 / std::sqrt(5.0);
-  for (int k = 0; k < 5; ++k) ico.emplace_back(rr * std::cos(0.4 * M_PI * k), rr * std::sin(0.4 * M_PI * k), zr);
   for (int k = 0; k < 5; ++k)
-    ico.emplace_back(rr * std::cos(0.4 * M_PI * (k + 0.5)), rr * std::sin(0.4 * M_PI * (k + 0.5)), -zr);
+    ico.emplace_back(rr * std::cos(0.4 * M_PI * k), rr * std::sin(0.4 * M_PI * k), zr);
+  for (int k = 0; k < 5; ++k)
+    ico.emplace_back(rr * std::cos(0.4 * M_PI * (k + 0.5)), rr * std::sin(0.4 * M_PI * (k + 0.5)),
+                     -zr);
   std::vector<std::array<int, 3>> faces;
   for (int k = 0; k < 5; ++k) {
     const int u0 = 2 + k, u1 = 2 + (k + 1) % 5, l0 = 7 + k, l1 = 7 + (k + 1) % 5;
