@@ -219,3 +219,31 @@ TEST(MembraneForces, RestShapeIsForceFree) {
   add_internal_forces(m);
   for (const auto& fi : m.f) EXPECT_LT(fi.norm(), 1e-12);
 }
+
+// Two equal masses on one spring: omega = sqrt(2 k / m), leapfrog is stable
+// for dt < 2 / omega, which critical_time_step returns exactly. Just below it
+// the amplitude stays bounded, just above it grows without bound.
+TEST(MembraneForces, CriticalTimeStepOfASpringPair) {
+  const std::vector<Edge> e{{0, 1}};
+  const std::vector<double> rest{1.0e-3}, mass{2e-6, 2e-6};
+  const double k = 324.8;
+  const std::vector<Vec3> x0{Vec3(1.0e-3, 0, 0), Vec3::Zero()};
+  const double dt_c = critical_time_step(e, mass, x0, k, 0.0, 0.0, 0.0);
+  EXPECT_NEAR(dt_c, 2.0 / std::sqrt(2.0 * k / mass[0]), 1e-15);
+  auto amplitude_after = [&](double dt) {
+    std::vector<Vec3> x{Vec3(1.01e-3, 0, 0), Vec3::Zero()}, v(2, Vec3::Zero()), f(2);
+    double biggest = 0;
+    for (int step = 0; step < 2000; ++step) {
+      f.assign(2, Vec3::Zero());
+      add_stretching_forces(e, rest, k, 0.0, x, v, mass, f);
+      for (int i = 0; i < 2; ++i) {
+        v[i] += dt * f[i] / mass[i];
+        x[i] += dt * v[i];
+      }
+      biggest = std::max(biggest, std::abs((x[0] - x[1]).norm() - rest[0]));
+    }
+    return biggest;
+  };
+  EXPECT_LT(amplitude_after(0.95 * dt_c), 1e-4);  // initial stretch 1e-5: bounded
+  EXPECT_GT(amplitude_after(1.05 * dt_c), 1e-3);  // grows past 100x
+}

@@ -1,6 +1,8 @@
 #include "talus/dem/membrane/forces.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "talus/core/error.hpp"
 
@@ -95,6 +97,40 @@ void add_pressure_forces(std::span<const std::array<int, 3>> triangles, double p
     f[t[1]] += share;
     f[t[2]] += share;
   }
+}
+
+double critical_time_step(std::span<const Edge> edges, std::span<const double> mass,
+                          std::span<const Vec3> x, double stiffness, double damping_ratio,
+                          double k_elastic, double k_dissipative) {
+  std::vector<double> K(mass.size(), 0.0), C(mass.size(), 0.0);
+  for (const Edge& e : edges) {
+    const double m_eff = mass[e.a] * mass[e.b] / (mass[e.a] + mass[e.b]);
+    const double c = 2.0 * damping_ratio * std::sqrt(stiffness * m_eff);
+    for (int i : {e.a, e.b}) {
+      K[i] += stiffness;
+      C[i] += c;
+    }
+    BendingElement b;
+    if (!e.interior() || !bending_element(x[e.opp0], x[e.opp1], x[e.a], x[e.b], b)) continue;
+    const int id[4] = {e.opp0, e.opp1, e.a, e.b};
+    for (int k = 0; k < 4; ++k) {
+      const double u2 = b.u[k].squaredNorm();
+      K[id[k]] += 0.5 * k_elastic * b.shape_factor * u2;
+      C[id[k]] += k_dissipative * b.edge_length * u2;
+    }
+  }
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < mass.size(); ++i) {
+    if (K[i] > 0) dt = std::min(dt, 2.0 / std::sqrt(2.0 * K[i] / mass[i]));
+    if (C[i] > 0) dt = std::min(dt, mass[i] / C[i]);
+  }
+  return dt;
+}
+
+double critical_time_step(const Membrane& m) {
+  const auto& p = m.params;
+  return critical_time_step(m.mesh.edges, m.mass, m.x, spring_constant(p.youngs_modulus, p.thickness),
+                            p.spring_damping, p.bending_elastic, p.bending_dissipative);
 }
 
 Membrane make_membrane(Mesh mesh, const MembraneParams& params) {

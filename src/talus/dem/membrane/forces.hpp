@@ -72,6 +72,18 @@ void add_bending_forces(std::span<const Edge> edges, std::span<const double> res
 void add_pressure_forces(std::span<const std::array<int, 3>> triangles, double pressure,
                          std::span<const Vec3> x, std::span<Vec3> f);
 
+// Largest stable step of explicit (leapfrog / velocity Verlet) integration of
+// the membrane alone, from per-particle sums: stiffness K_i (springs k_sp, and
+// the linearised bending k_el |e|^2/(|n1|+|n2|) |u_i|^2 / 2) and damping C_i
+// (2 gamma_sp sqrt(k_sp m_eff), and k_diss |e| |u_i|^2):
+//   dt_c = min_i min(2 / sqrt(2 K_i / m_i), m_i / C_i)
+// (Gershgorin bound on the stiffness, and the explicit damper's limit). Exact
+// for two equal masses on one undamped spring. The bending damper can bind
+// first on fine meshes: C_i / m_i grows as 1 / spacing^3.
+double critical_time_step(std::span<const Edge> edges, std::span<const double> mass,
+                          std::span<const Vec3> x, double stiffness, double damping_ratio,
+                          double k_elastic, double k_dissipative);
+
 // Material of a membrane, SI units as in the source (Götz 2024 Table 2).
 struct MembraneParams {
   double youngs_modulus = 0;       // E_m [Pa]
@@ -97,5 +109,6 @@ struct Membrane {
 Membrane make_membrane(Mesh mesh, const MembraneParams& params);
 // Adds stretching, bending and pressure forces to m.f (does not clear it).
 void add_internal_forces(Membrane& m);
+double critical_time_step(const Membrane& m);
 
 }  // namespace talus::dem::membrane
