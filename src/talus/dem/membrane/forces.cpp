@@ -129,8 +129,9 @@ double critical_time_step(std::span<const Edge> edges, std::span<const double> m
 
 double critical_time_step(const Membrane& m) {
   const auto& p = m.params;
-  return critical_time_step(m.mesh.edges, m.mass, m.x, spring_constant(p.youngs_modulus, p.thickness),
-                            p.spring_damping, p.bending_elastic, p.bending_dissipative);
+  return critical_time_step(m.mesh.edges, m.mass, m.x,
+                            spring_constant(p.youngs_modulus, p.thickness), p.spring_damping,
+                            p.bending_elastic, p.bending_dissipative);
 }
 
 Membrane make_membrane(Mesh mesh, const MembraneParams& params) {
