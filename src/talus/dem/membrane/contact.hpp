@@ -1,0 +1,123 @@
+#pragma once
+// Grain-membrane contacts (spec/membranes-and-jamming.md, Götz 2024 §3.2.3):
+// spheres against the triangles of the current mesh. The closest point of each
+// nearby triangle is classified as vertex, edge or face contact; with the
+// priority face > edge > vertex of Hu et al. (2013) a vertex or edge contact
+// is dropped when a triangle sharing that vertex or edge has a higher-priority
+// contact, and a vertex or edge shared by several triangles gives one force.
+// One addition (see select_contacts): it is also dropped when such a triangle
+// has a closer contact, i.e. only local minima of the distance to the mesh
+// count; the priority rule alone double-counts on flat sheets.
+// The membrane velocity at the contact point is interpolated with the
+// barycentric weights w_i, and the vertices get -w_i F_c (sum w_i = 1, so
+// momentum is conserved to round-off).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "talus/dem/contact/hertz_mindlin.hpp"
+#include "talus/dem/membrane/mesh.hpp"
+
+namespace talus::dem::membrane {
+
+// The value is the priority of Götz Table 1.
+enum class Feature : uint8_t { Vertex = 1, Edge = 2, Face = 3 };
+
+// Closest point of the triangle (a, b, c) to x (Ericson, Real-Time Collision
+// Detection 5.1.5), with its region: `corner` is the vertex (Vertex) or the
+// corner opposite the edge (Edge, as Mesh::triangle_edges), -1 for Face.
+struct TrianglePoint {
+  Vec3 point;
+  std::array<double, 3> w;  // barycentric weights of point, sum 1
+  Feature kind;
+  int corner;
+};
+TrianglePoint closest_on_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x);
+
+struct TriangleContact {
+  int triangle = -1;
+  Feature kind = Feature::Face;
+  int feature = -1;  // mesh index of the vertex, edge or triangle touched
+  Vec3 point = Vec3::Zero();
+  std::array<double, 3> w{};  // weights of the triangle's corners
+  double distance = 0;        // from the sphere centre to point
+};
+
+// Contacts of a sphere (centre, radius) with the candidate triangles of a mesh
+// at positions x, after the priority rule; appended to out (cleared first).
+void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& centre, double radius,
+                     std::span<const int> candidates, std::vector<TriangleContact>& out);
+
+// Tangential springs of grain-membrane contacts, keyed by (grain, feature).
+// When a contact moves onto another feature (face to face across an edge, say)
+// its spring moves with it: a new key takes the spring of the same grain's
+// contact of the previous step that has not continued and whose contact point
+// was nearest, if it was within the grain radius. Without this, every crossing
+// of a triangle boundary would reset friction (the oscillation at the mesh
+// period that the triangle model is meant to remove).
+class ContactMemory {
+ public:
+  // Call once per step before the first contact: this step's springs become
+  // the previous ones.
+  void begin_step();
+  // Springs of all contacts of one grain (exact key first, then transfers),
+  // zero for new contacts; `out` is resized to contacts.size(). Call once per
+  // grain and step, then store() each updated spring.
+  void springs(int64_t grain, std::span<const TriangleContact> contacts, double radius,
+               std::vector<ContactHistory<3>>& out);
+  void store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h);
+  std::size_t size() const { return current_.size(); }
+
+ private:
+  struct Entry {
+    int64_t grain;
+    uint64_t feature;  // kind << 32 | index
+    Vec3 point;
+    ContactHistory<3> history;
+    bool continued;
+  };
+  std::vector<Entry> previous_, current_;
+};
+
+// A sphere as the contact sees it.
+struct Grain {
+  Vec3 x = Vec3::Zero(), v = Vec3::Zero(), w = Vec3::Zero();
+  double radius = 0, mass = 0;
+};
+
+struct GrainForce {
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+  int contacts = 0;
+};
+
+// Viscoelastic Hertz forces (dem/contact/hertz_mindlin.hpp, as walls: r_eff =
+// R, m_eff = m of the grain, lever arm R - overlap/2) of the selected contacts
+// on the grain; the reactions -w_i F go into f_mem. `contacts` comes from
+// select_contacts for this grain and these positions.
+GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                                 std::span<const Vec3> v_mem, std::span<Vec3> f_mem,
+                                 int64_t grain_id, const Grain& g,
+                                 std::span<const TriangleContact> contacts,
+                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                 ContactMemory& memory);
+
+// Candidate triangles near spheres: a uniform grid of triangle bounding boxes,
+// rebuilt whenever the membrane has moved (cheap: one pass over the triangles).
+class TriangleGrid {
+ public:
+  void build(const Mesh& mesh, std::span<const Vec3> x, double cell);
+  // Triangles whose cells overlap the sphere's bounding box (each once).
+  void query(const Vec3& centre, double radius, std::vector<int>& out) const;
+
+ private:
+  Vec3 origin_ = Vec3::Zero();
+  double cell_ = 1;
+  Eigen::Vector3i dims_ = Eigen::Vector3i::Ones();
+  std::vector<int> start_, list_;
+  mutable std::vector<int> stamp_;
+  mutable int query_id_ = 0;
+  Eigen::Vector3i cell_of(const Vec3& p) const;
+};
+
+}  // namespace talus::dem::membrane
