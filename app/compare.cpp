@@ -81,11 +81,10 @@ Result read_dem(const fs::path& dir) {
     r.t.push_back(row[front.column("time")]);
     r.s.push_back(row[front.column("front_s")]);
   }
-  const auto profile = io::read_csv(dir / "flume" / "deposit_profile.csv");
-  for (const auto& row : profile.rows) {
-    if (row[profile.column("count")] == 0) continue;
-    r.x.push_back(row[profile.column("surface_x")]);
-    r.y.push_back(row[profile.column("surface_y")]);
+  const auto surface = io::read_csv(dir / "flume" / "deposit_surface.csv");
+  for (const auto& row : surface.rows) {
+    r.x.push_back(row[surface.column("x")]);
+    r.y.push_back(row[surface.column("y")]);
   }
   return r;
 }

@@ -80,15 +80,13 @@ def front_plot(front, summary, out):
 
 
 def deposit_plot(run, path, summary, layers, out):
-    profile = read_columns(os.path.join(run, "flume", "deposit_profile.csv"))
+    surface = read_columns(os.path.join(run, "flume", "deposit_surface.csv"))
     fig, ax = plt.subplots(figsize=(9, 4))
     frames = sorted(glob.glob(os.path.join(run, "flume", "frames", "t_*.csv")))
     if frames:
         draw_grains(ax, read_columns(frames[-1]), layers)
     draw_bed(ax, path)
-    xs = [x for x, c in zip(profile["surface_x"], profile["count"]) if c > 0]
-    ys = [y for y, c in zip(profile["surface_y"], profile["count"]) if c > 0]
-    ax.plot(xs, ys, color="C3", lw=1, label="deposit surface")
+    ax.plot(surface["x"], surface["y"], color="C3", lw=1, label="deposit surface")
     tail = summary["deposit"]["tail_s"]
     i = min(range(len(path["s"])), key=lambda k: abs(path["s"][k] - tail))
     ax.plot(path["x"][i], path["y"][i], "v", color="C1", ms=9,

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "talus/core/error.hpp"
+#include "talus/analysis/dam_break.hpp"
 #include "talus/io/csv_reader.hpp"
 
 namespace talus::analysis {
@@ -155,6 +156,17 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
     for (const auto& b : profile) {
       out.row({b.s_low, b.s_high, static_cast<double>(b.count), b.thickness, b.surface.x(),
                b.surface.y()});
+    }
+    out.flush();
+  }
+  {
+    // The surface as elevation over x (the top of the highest grain in each
+    // 1 cm column): over the arc the deposit is thicker than R and a profile
+    // along the path normals is ill-defined there; this one is not.
+    const SlopeProfile columns = slope_profile(g, geometry_.barrier_end.x(), 0.01);
+    io::CsvSeries out(dir_ / "deposit_surface.csv", {"x", "y"}, false);
+    for (std::size_t k = 0; k < columns.x.size(); ++k) {
+      if (columns.top[k] > 0) out.row({columns.x[k], columns.top[k]});
     }
     out.flush();
   }

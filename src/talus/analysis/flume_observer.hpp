@@ -6,7 +6,8 @@
 //   path.csv           the bed line (s, x, y)
 //   layers.csv         initial layer of every grain (by id), for colouring
 //   frames/t_*.csv     x, y, r, layer at each snapshot time (the pictures)
-//   deposit_profile.csv  surface of the final deposit along the path
+//   deposit_profile.csv  thickness of the final deposit along the path
+//   deposit_surface.csv  its surface as elevation over x (1 cm columns)
 // and the numbers a designer reads (arrival, run-up, tail, peaks, impulses) as
 // JSON for summary.json. Forces are per metre of flume width, as the particles
 // push on the walls.
