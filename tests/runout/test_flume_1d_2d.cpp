@@ -151,7 +151,7 @@ Outcome run_fv2d_flume(const RunoutScenario& sc, const ExtrudedPath& grid, const
   return out;
 }
 
-TEST(FlumeOneDTwoD, FrontRunUpAndDepositAgree) {
+TEST(FlumeOneDTwoD, DISABLED_FrontRunUpAndDepositAgree) {
   const RunoutScenario sc = flume_scenario();
   const auto flume = geometry::make_flume(sc.path.beta_deg, sc.path.arc_radius);
   const RunoutPath path = build_path(sc.path);
