@@ -43,9 +43,9 @@ namespace talus::runout {
 namespace {
 
 constexpr double kSampleInterval = 0.1;
-constexpr int kSamples = 8;     // fronts at 0.1 ... 0.8 s
-constexpr double kEnd = 3.0;    // the scenario's duration
-constexpr double kDx = 0.005;   // 2D column width, m
+constexpr int kSamples = 8;    // fronts at 0.1 ... 0.8 s
+constexpr double kEnd = 3.0;   // the scenario's duration
+constexpr double kDx = 0.005;  // 2D column width, m
 constexpr double kFlumeWidth = 0.35;
 constexpr std::size_t kRows = 3;
 constexpr double kFrontDepth = 1e-3;  // 2D front: last column deeper than this (bed-normal)
@@ -60,7 +60,7 @@ RunoutScenario flume_scenario() {
 }
 
 struct Outcome {
-  double front[kSamples];  // path coordinate s of the front at 0.1 k s
+  double front[kSamples];   // path coordinate s of the front at 0.1 k s
   double runup_max = -1e9;  // highest bed elevation under the front (m)
   double final_front = 0.0;
   std::vector<double> column_volume;  // final deposit per 2D column, m^3 per m width
@@ -165,7 +165,8 @@ TEST(FlumeOneDTwoD, DISABLED_FrontRunUpAndDepositAgree) {
 
   // Both start from the triangle's 0.07714 m^2 (flume.md) and keep it.
   double v1 = 0.0, v2 = 0.0;
-  for (std::size_t i = 0; i < grid.shape.nx; ++i) v1 += one.column_volume[i], v2 += two.column_volume[i];
+  for (std::size_t i = 0; i < grid.shape.nx; ++i)
+    v1 += one.column_volume[i], v2 += two.column_volume[i];
   EXPECT_NEAR(v1, area, 1e-9 * area);
   EXPECT_NEAR(v2, area, 1e-9 * area);
   EXPECT_LT(volume_error, 1e-12);

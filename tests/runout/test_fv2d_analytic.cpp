@@ -23,7 +23,8 @@ constexpr double kG = 9.81;
 double centre_x(const Fv2dSolver& s) {
   const auto& g = s.terrain().shape();
   double m = 0.0, mx = 0.0;
-  for (std::size_t i = 0; i < g.nx; ++i) m += s.state().h[i], mx += s.state().h[i] * (i + 0.5) * g.dx;
+  for (std::size_t i = 0; i < g.nx; ++i)
+    m += s.state().h[i], mx += s.state().h[i] * (i + 0.5) * g.dx;
   return mx / m;
 }
 
@@ -199,7 +200,8 @@ TEST(Fv2dAnalytic, PileStopsWherePointMassStops) {
   while (s.state().time < 4.0 && !(s.state().time > 0 && s.at_rest()))
     s.step(std::min(s.stable_time_step(), 0.01));
   ASSERT_TRUE(s.at_rest());
-  const double x_stop = path.point(point_mass_stop(path, path.s_at_x(x0), std::tan(deg2rad(phi)))).x();
+  const double x_stop =
+      path.point(point_mass_stop(path, path.s_at_x(x0), std::tan(deg2rad(phi)))).x();
   EXPECT_NEAR(centre_x(s), x_stop, 0.5 * len);
   std::printf("stop: centre %.4f, point mass %.4f, energy line %.4f\n", centre_x(s), x_stop,
               x0 + path.point(path.s_at_x(x0)).y() / std::tan(deg2rad(phi)));

@@ -15,10 +15,12 @@ namespace talus::runout {
 
 struct ExtrudedPath {
   GridShape shape;
-  double x_begin = 0.0;            // x of the west edge of column 0
-  std::vector<double> elevation;   // per cell: path y at the cell centre's x
-  std::vector<double> release;     // per cell: vertical thickness (m)
-  double x_centre(std::size_t i) const { return x_begin + (static_cast<double>(i) + 0.5) * shape.dx; }
+  double x_begin = 0.0;           // x of the west edge of column 0
+  std::vector<double> elevation;  // per cell: path y at the cell centre's x
+  std::vector<double> release;    // per cell: vertical thickness (m)
+  double x_centre(std::size_t i) const {
+    return x_begin + (static_cast<double>(i) + 0.5) * shape.dx;
+  }
 };
 
 // Columns of width dx from x_begin to (at least) x_end, `rows` rows of width
