@@ -14,6 +14,7 @@ DanOutputs::DanOutputs(std::filesystem::path dir) : dir_(std::move(dir)) {
 }
 
 void DanOutputs::on_series(const DanModel& m) {
+  if (!path_written_) write_path(m.path());
   const auto& b = m.blocks();
   const Vec2 front = m.path().point(b.s.back());
   double max_depth = 0;
@@ -42,6 +43,20 @@ void DanOutputs::on_snapshot(const DanModel& m) {
   }
   blocks_->add(b.time, f);
   series_->flush();
+}
+
+void DanOutputs::write_path(const RunoutPath& path) {
+  // 5 mm along the path: smooth enough for a plot of the bed, small on disk.
+  io::CsvSeries out(dir_ / "path.csv", {"s", "x", "y", "width"}, false);
+  const double s0 = path.s_begin(), s1 = path.s_end();
+  const auto n = static_cast<std::size_t>(std::ceil((s1 - s0) / 0.005));
+  for (std::size_t k = 0; k <= n; ++k) {
+    const double s = s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(n);
+    const Vec2 p = path.point(s);
+    out.row({s, p.x(), p.y(), path.width(s)});
+  }
+  out.flush();
+  path_written_ = true;
 }
 
 void DanOutputs::on_progress(double time, double end, double steps_per_s) {

@@ -2,7 +2,8 @@
 // Files of a DAN run's output folder: series.csv (front, tail, speeds, energy,
 // mass, momentum), blocks.pvd (ParaView: the boundary blocks as points on the
 // bed with depth and velocity), and at the end deposit.csv (the final surface
-// profile) and front.csv (front along the path versus time). The model knows
+// profile) and front.csv (front along the path versus time); path.csv (the
+// bed along the path, for plots) with the first series row. The model knows
 // nothing of files; this observer sits between it and the io writers.
 #include <filesystem>
 #include <functional>
@@ -26,6 +27,8 @@ class DanOutputs final : public DanObserver {
   std::function<void(double, double, double)> progress;  // set by the app
 
  private:
+  void write_path(const RunoutPath& path);
+  bool path_written_ = false;
   std::filesystem::path dir_;
   std::unique_ptr<io::CsvSeries> series_;
   std::unique_ptr<io::PvdSeries> blocks_;

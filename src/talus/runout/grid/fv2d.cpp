@@ -108,6 +108,17 @@ Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> i
   quiet_.resize(n);
 }
 
+void Fv2dSolver::set_state(const FlowState& state) {
+  const std::size_t n = terrain_.shape().cells();
+  if (state.h.size() != n || state.hu.size() != n || state.hv.size() != n)
+    throw InputError(fmt::format("fv2d: a state needs {} depths and momenta", n));
+  for (std::size_t c = 0; c < n; ++c)
+    if (!(state.h[c] >= 0.0) || !std::isfinite(state.h[c]) || !std::isfinite(state.hu[c]) ||
+        !std::isfinite(state.hv[c]))
+      throw InputError(fmt::format("fv2d: cell {} of a state is negative or not finite", c));
+  s_ = state;
+}
+
 double Fv2dSolver::normal_height(std::size_t c) const {
   return s_.h[c] * std::sqrt(terrain_.cos2()[c]);
 }
@@ -347,8 +358,18 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
         out.hu[c] = out.hv[c] = 0.0;
         continue;
       }
-      double mx = in.hu[c] + d[1] - dt * g_bed_[c] * h0 * bx[c];
-      double my = in.hv[c] + d[2] - dt * g_bed_[c] * h0 * by[c];
+      // The bed's reaction: its horizontal part is -sigma_n grad(b) with
+      // sigma_n / rho = H cos^2 (g + U^T Hess(b) U). The centripetal part
+      // turns the flow along a curved bed without changing its speed (without
+      // it a concave slope break acts like a kink: horizontal momentum is
+      // kept and sin^2 of the kinetic energy is lost going down, gained going
+      // up). Evaluated with the stage's input velocity (explicit).
+      const double u0 = h0 > dry ? in.hu[c] / h0 : 0.0, v0 = h0 > dry ? in.hv[c] / h0 : 0.0;
+      const double turn0 =
+          p_.curvature ? u0 * u0 * hxx[c] + 2.0 * u0 * v0 * hxy[c] + v0 * v0 * hyy[c] : 0.0;
+      const double reaction = dt * h0 * terrain_.cos2()[c] * std::max(0.0, p_.gravity + turn0);
+      double mx = in.hu[c] + d[1] - reaction * bx[c];
+      double my = in.hv[c] + d[2] - reaction * by[c];
       // Basal friction, implicit in the depth: it stops a cell, never reverses it.
       const double u = mx / h, v = my / h, wz = u * bx[c] + v * by[c];
       const double centripetal =

@@ -15,7 +15,10 @@
 // so a block slides with g (sin - cos tan(phi_b)) along the slope. On curved
 // terrain cos(theta) comes from the local gradient and the basal normal
 // stress gets the centripetal term: sigma_n = rho H cos^2 (g + U^T Hess(b) U)
-// (the bed-normal acceleration of a particle moving with U on z = b(x, y)).
+// (the bed-normal acceleration of a particle moving with U on z = b(x, y)),
+// both in the friction and in the bed's reaction -sigma_n grad(b) / rho that
+// replaces -g cos^2 H grad(b) above (it turns the flow along a curved bed
+// without changing its speed: a frictionless point mass keeps its energy).
 // The friction magnitude is the rheology's bed stress (rheology.hpp) with the
 // bed-parallel speed sqrt(|U|^2 + (U . grad b)^2).
 //
@@ -71,6 +74,9 @@ class Fv2dSolver {
   void step(double dt);
 
   const FlowState& state() const { return s_; }
+  // Replaces depths, momenta and time (e.g. a moving start). Throws
+  // InputError for a size mismatch or a negative or non-finite value.
+  void set_state(const FlowState& state);
   const Terrain& terrain() const { return terrain_; }
   const Fv2dParams& params() const { return p_; }
   const std::vector<double>& earth_pressure() const { return k_; }

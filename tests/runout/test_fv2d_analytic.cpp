@@ -1,0 +1,211 @@
+// The 2D solver against the remaining analytic cases of spec runout.md
+// "Verification", each on a strip one cell wide along x: the Savage-Hutter
+// parabolic cap on a plane, a frictionless layer through a curved slope
+// break (the bed's reaction turns it without changing its speed), and the
+// stopping position of a pile running from an incline onto a flat.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fv2d_helpers.hpp"
+#include "talus/core/space.hpp"
+#include "talus/runout/grid/path_terrain.hpp"
+
+namespace talus::runout {
+namespace {
+
+using testing::run_to;
+using testing::sample;
+
+constexpr double kG = 9.81;
+
+double centre_x(const Fv2dSolver& s) {
+  const auto& g = s.terrain().shape();
+  double m = 0.0, mx = 0.0;
+  for (std::size_t i = 0; i < g.nx; ++i)
+    m += s.state().h[i], mx += s.state().h[i] * (i + 0.5) * g.dx;
+  return mx / m;
+}
+
+struct CapRun {
+  double centre, centre_exact, lambda, lambda_ode, l1;
+};
+
+// Savage & Hutter (1989), as in the DAN test: on a plane of inclination zeta
+// with bed friction delta and constant K a parabolic pile stays parabolic;
+// along the slope its centre moves with g (sin - tan cos) and its half-length
+// is lambda L0 with lambda'' = 2 K g cos h0 / (L0^2 lambda^2). Over the
+// horizontal plane (fv2d's frame) the pile is the same parabola with the
+// vertical thickness H = h / cos(zeta) and horizontal half-length
+// lambda L0 cos(zeta); its second moment about the centre is
+// (lambda L0 cos)^2 / 5. 1 m/s downslope at the start keeps all of it moving
+// downslope (one sign of friction) over the 1.5 s compared.
+CapRun cap_run(double dx) {
+  const double zeta = deg2rad(35), delta = deg2rad(25), h0 = 0.1, L0 = 1.0, u0 = 1.0;
+  const double K = earth_pressure_limits(deg2rad(35), std::tan(delta)).active;
+  const double c = std::cos(zeta);
+  GridShape g{static_cast<std::size_t>(std::lround(9.0 / dx)), 1, dx, dx};
+  auto bed = sample(g, [&](double x, double) { return -std::tan(zeta) * x; });
+  const double xc0 = 1.5;  // horizontal
+  auto depth = sample(g, [&](double x, double) {
+    const double r = (x - xc0) / (L0 * c);
+    return std::max(0.0, h0 / c * (1.0 - r * r));
+  });
+  Fv2dParams p = testing::frictional(25.0, 35.0);
+  p.pressure.mode = EarthPressureMode::Constant;
+  p.pressure.constant = K;
+  Fv2dSolver s(Terrain(g, bed), p, depth);
+  FlowState start = s.state();
+  for (std::size_t k = 0; k < g.cells(); ++k) start.hu[k] = depth[k] * u0 * c;
+  s.set_state(start);
+  double v0 = 0.0;  // per unit width of the strip
+  for (double h : depth) v0 += h * dx;
+  const double T = 1.5;
+  double min_u = 1e9;
+  run_to(s, T, [&](const Fv2dSolver& f) {
+    for (std::size_t k = 0; k < g.cells(); ++k)
+      if (f.state().h[k] > 1e-3) min_u = std::min(min_u, f.state().hu[k] / f.state().h[k]);
+  });
+  EXPECT_GT(min_u, 0.0);  // the analytic solution is valid throughout
+  double lam = 1, dlam = 0;
+  const double a_lam = 2 * K * kG * c * h0 / (L0 * L0), step = 1e-5;
+  for (int k = 0; k < static_cast<int>(T / step + 0.5); ++k) {
+    auto f = [&](double l) { return a_lam / (l * l); };
+    const double a1 = f(lam), b1 = dlam;
+    const double a2 = f(lam + 0.5 * step * b1), b2 = dlam + 0.5 * step * a1;
+    const double a3 = f(lam + 0.5 * step * b2), b3 = dlam + 0.5 * step * a2;
+    const double a4 = f(lam + step * b3), b4 = dlam + step * a3;
+    lam += step / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
+    dlam += step / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+  }
+  const double a = kG * (std::sin(zeta) - std::tan(delta) * c);
+  const double xc = xc0 + (u0 * T + 0.5 * a * T * T) * c, xm = centre_x(s);
+  double m2 = 0.0, l1 = 0.0;
+  for (std::size_t i = 0; i < g.nx; ++i) {
+    const double x = (i + 0.5) * dx, r = (x - xc) / (lam * L0 * c);
+    m2 += s.state().h[i] * dx * (x - xm) * (x - xm);
+    l1 += std::abs(s.state().h[i] - std::max(0.0, h0 / (lam * c) * (1 - r * r))) * dx;
+  }
+  const CapRun out{xm, xc, std::sqrt(5.0 * m2 / v0) / (L0 * c), lam, l1 / v0};
+  std::printf("cap dx %.4f: centre %.4f (exact %.4f), lambda %.4f (ODE %.4f), L1 %.4f\n", dx,
+              out.centre, out.centre_exact, out.lambda, out.lambda_ode, out.l1);
+  return out;
+}
+
+TEST(Fv2dAnalytic, SavageHutterParabolicCap) {
+  // The tolerances below were fixed before the first run at dx = 1 cm,
+  // where lambda came out 0.043 short (docs/validation.md); the error is
+  // first order in dx (0.043, 0.022, 0.011 at 10, 5, 2.5 mm: the
+  // parabola's edges are kinks, which the minmod limiter resolves at first
+  // order), so the test asserts that convergence and the original
+  // tolerances at 2.5 mm.
+  const CapRun coarse = cap_run(0.005), fine = cap_run(0.0025);
+  ASSERT_GT(fine.lambda_ode, 1.2);  // spread enough for the test to tell
+  // Centre: one cell. Friction of the thin, slow cells the reconstruction
+  // spreads ahead of the edges is capped (they stop instead of reversing).
+  EXPECT_NEAR(fine.centre, fine.centre_exact, 0.0025);
+  // Spreading: lambda from the second moment within 0.02 (2 % of the
+  // spreading lambda - 1 = 0.97), converging at first order or better.
+  EXPECT_NEAR(fine.lambda, fine.lambda_ode, 0.02);
+  EXPECT_LT(std::abs(fine.lambda - fine.lambda_ode),
+            0.6 * std::abs(coarse.lambda - coarse.lambda_ode));
+  // Shape: L1 distance to the parabola below 3 % of the volume.
+  EXPECT_LT(fine.l1, 0.03);
+}
+
+// A 30 deg incline from height 1 m into a flat, the break rounded by a
+// circular arc of radius 1 m (tangent to both).
+double incline_arc_flat(double x) {
+  const double th = deg2rad(30), R = 1.0, xc = 2.0, xa = xc - R * std::sin(th);
+  const double ya = R - R * std::cos(th);
+  if (x < xa) return ya + std::tan(th) * (xa - x);
+  if (x < xc) return R - std::sqrt(R * R - (x - xc) * (x - xc));
+  return 0.0;
+}
+
+TEST(Fv2dAnalytic, FrictionlessLayerKeepsItsEnergyThroughACurve) {
+  // k = 0 and no friction: every cell is a point mass on the bed, whose
+  // kinetic plus potential energy is constant. A layer 1 cm thin (its own
+  // height is negligible) and 0.1 m long runs down the incline and around
+  // the arc onto the flat. Without the centripetal part of the bed's
+  // reaction it would keep its horizontal momentum through the arc and lose
+  // sin^2(30) = 25 % of its kinetic energy. Asserted: energy within 2 % of
+  // the kinetic energy (the upwind transport of the thin layer mixes a
+  // little), and the centre moves at the point-mass speed within 1 %.
+  const double dx = 0.005;
+  GridShape g{800, 1, dx, dx};
+  auto bed = sample(g, [](double x, double) { return incline_arc_flat(x); });
+  auto depth = sample(g, [](double x, double) { return x > 0.2 && x < 0.3 ? 0.01 : 0.0; });
+  Fv2dParams p = testing::frictionless();
+  p.pressure.constant = 0.0;
+  Fv2dSolver s(Terrain(g, bed), p, depth);
+  auto potential = [&](const Fv2dSolver& f) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < g.nx; ++i) e += f.state().h[i] * bed[i];
+    return p.density * kG * e * g.cell_area();
+  };
+  const double e0 = potential(s), drop = incline_arc_flat(centre_x(s));
+  run_to(s, 1.1);
+  // The whole layer is on the flat, beyond the arc's end at x = 2.
+  for (std::size_t i = 0; i < 2.0 / dx; ++i) ASSERT_LT(s.state().h[i], 1e-6);
+  const double ke = s.kinetic_energy();
+  EXPECT_NEAR(ke + potential(s), e0, 0.02 * ke);
+  EXPECT_NEAR(s.momentum_x() / s.mass(), std::sqrt(2 * kG * drop), 0.01 * std::sqrt(2 * kG * drop));
+  std::printf("curve: energy change %.4f of KE, speed %.4f (point mass %.4f)\n",
+              (ke + potential(s) - e0) / ke, s.momentum_x() / s.mass(), std::sqrt(2 * kG * drop));
+}
+
+// Point mass along the path with the centripetal term, RK4 (as the DAN test).
+double point_mass_stop(const RunoutPath& path, double s0, double tan_phi) {
+  double s = s0, v = 0;
+  const double h = 1e-5;
+  auto accel = [&](double s_, double v_) {
+    const double th = path.angle(s_);
+    const double normal = std::max(0.0, kG * std::cos(th) + v_ * v_ * path.curvature(s_));
+    return -kG * std::sin(th) - normal * tan_phi;
+  };
+  for (int k = 0; k < 10000000; ++k) {
+    const double k1v = accel(s, v), k1s = v;
+    const double k2v = accel(s + 0.5 * h * k1s, v + 0.5 * h * k1v), k2s = v + 0.5 * h * k1v;
+    const double k3v = accel(s + 0.5 * h * k2s, v + 0.5 * h * k2v), k3s = v + 0.5 * h * k2v;
+    const double k4v = accel(s + h * k3s, v + h * k3v), k4s = v + h * k3v;
+    const double vn = v + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+    if (vn <= 0) return s;
+    s += h / 6 * (k1s + 2 * k2s + 2 * k3s + k4s);
+    v = vn;
+  }
+  return s;
+}
+
+TEST(Fv2dAnalytic, PileStopsWherePointMassStops) {
+  // The DAN case (test_dan_verification.cpp): a short pile, 5 cm long and
+  // 1 cm deep, k = 1, on a 30 deg incline from 1 m height onto a flat, the
+  // corner smoothed over 0.3 m; bed friction 20 deg. Its centre of mass stops
+  // where a point mass from its start stops (RK4 along the same path, with
+  // the centripetal term), up to the pile's own spreading: half its length.
+  const double th = deg2rad(30), phi = 20;
+  const auto path = path_from_profile({{0, 1}, {1 / std::tan(th), 0}, {4, 0}}, {1, 1, 1}, 0.3);
+  const double s0 = 0.2, len = 0.05;
+  const Vec2 a = path.point(s0), b = path.point(s0 + len);
+  // The pile as a bed-normal 1 cm layer, sliced vertically (H = h / cos).
+  const std::vector<Vec2> pile = {a, b, b + 0.01 * Vec2(std::sin(th), std::cos(th)),
+                                  a + 0.01 * Vec2(std::sin(th), std::cos(th))};
+  const ExtrudedPath grid = extrude_path(path, 0.0, 4.0, 0.004, 1, 0.004, pile);
+  Fv2dParams p = testing::frictional(phi, 30.0);
+  p.pressure.mode = EarthPressureMode::Constant;
+  p.pressure.constant = 1.0;
+  Fv2dSolver s(Terrain(grid.shape, grid.elevation), p, grid.release);
+  const double x0 = centre_x(s);
+  while (s.state().time < 4.0 && !(s.state().time > 0 && s.at_rest()))
+    s.step(std::min(s.stable_time_step(), 0.01));
+  ASSERT_TRUE(s.at_rest());
+  const double x_stop =
+      path.point(point_mass_stop(path, path.s_at_x(x0), std::tan(deg2rad(phi)))).x();
+  EXPECT_NEAR(centre_x(s), x_stop, 0.5 * len);
+  std::printf("stop: centre %.4f, point mass %.4f, energy line %.4f\n", centre_x(s), x_stop,
+              x0 + path.point(path.s_at_x(x0)).y() / std::tan(deg2rad(phi)));
+}
+
+}  // namespace
+}  // namespace talus::runout
