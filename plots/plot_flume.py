@@ -80,13 +80,15 @@ def front_plot(front, summary, out):
 
 
 def deposit_plot(run, path, summary, layers, out):
-    surface = read_columns(os.path.join(run, "flume", "deposit_surface.csv"))
+    surface_csv = os.path.join(run, "flume", "deposit_surface.csv")
     fig, ax = plt.subplots(figsize=(9, 4))
     frames = sorted(glob.glob(os.path.join(run, "flume", "frames", "t_*.csv")))
     if frames:
         draw_grains(ax, read_columns(frames[-1]), layers)
     draw_bed(ax, path)
-    ax.plot(surface["x"], surface["y"], color="C3", lw=1, label="deposit surface")
+    if os.path.exists(surface_csv):  # runs of talus before 2026-11-22 lack it
+        surface = read_columns(surface_csv)
+        ax.plot(surface["x"], surface["y"], color="C3", lw=1, label="deposit surface")
     tail = summary["deposit"]["tail_s"]
     i = min(range(len(path["s"])), key=lambda k: abs(path["s"][k] - tail))
     ax.plot(path["x"][i], path["y"][i], "v", color="C1", ms=9,
