@@ -374,7 +374,7 @@ TEST(Scenario, ExampleInTheFormatDocumentationIsValid) {
   std::stringstream doc;
   doc << in.rdbuf();
   const std::string text = doc.str();
-  const auto begin = text.find("```toml\n");
+  const auto begin = text.find("```toml\n", text.find("## Example"));
   ASSERT_NE(begin, std::string::npos);
   const auto end = text.find("```", begin + 8);
   const std::string example = text.substr(begin + 8, end - begin - 8);

@@ -80,6 +80,39 @@ TEST(MpmScenario, BadInputNamesFileLineAndKey) {
   expect_error(edit(kBase, "x_min = \"fixed\"", "x_min = \"sticky\""), "'x_min'");
 }
 
+const std::string kRigid = R"(
+[[rigid_bodies]]
+box = { min = [0.1, 0.1], max = [0.9, 0.15] }
+friction = 0.4
+angle = 10
+motion = { angular_velocity = 30, hinge = [0.5, 0.15], stop = 0.2 }
+)";
+
+TEST(MpmScenario, RigidBodiesParseRoundTripAndBuild) {
+  const auto sc = parse_mpm_scenario(load_scenario_text(kBase + kRigid, "rigid.toml"));
+  ASSERT_EQ(sc.rigid_bodies.size(), 1u);
+  const auto& r = sc.rigid_bodies[0];
+  EXPECT_EQ(r.contact, mpm::RigidContact::Friction);  // default
+  EXPECT_EQ(r.friction, 0.4);
+  EXPECT_NEAR(r.angle, 10.0 * M_PI / 180.0, 1e-15);                        // degrees in the file
+  EXPECT_NEAR(r.motion.angular_velocity.z(), 30.0 * M_PI / 180.0, 1e-15);  // degrees per second
+  EXPECT_EQ(r.motion.stop, 0.2);
+  const auto again = parse_mpm_scenario(load_scenario_text(mpm_scenario_to_toml(sc), "r.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
+  const auto solver = mpm::build_mpm<2>(sc);
+  // 16 x 1 cells of 0.05 m, 2 x 2 points each.
+  ASSERT_EQ(solver.rigid_bodies[0].x.size(), 64u);
+  // Points of the top layer face up, turned by the initial 10 degrees.
+  const auto& body = solver.rigid_bodies[0];
+  EXPECT_NEAR(body.normal[40].dot(Eigen::Vector2d(-std::sin(r.angle), std::cos(r.angle))), 1.0,
+              1e-12);
+  expect_error(edit(kBase + kRigid, "friction = 0.4", "contact = \"stick\"\nfriction = 0.4"),
+               "'friction'");
+  expect_error(edit(kBase + kRigid, "stop = 0.2", "start = 0.3, stop = 0.2"), "'stop'");
+  expect_error(edit(kBase + kRigid, "max = [0.9, 0.15]", "max = [1.9, 0.15]"),
+               "[[rigid_bodies]] 'box'");
+}
+
 TEST(MpmScenario, BundledColumnBuilds) {
   const auto file =
       load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_column_collapse.toml", {});

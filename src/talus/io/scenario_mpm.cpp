@@ -137,12 +137,54 @@ mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemCon
   return b;
 }
 
+const EnumNames<mpm::RigidContact> kContacts = {{"friction", mpm::RigidContact::Friction},
+                                                {"stick", mpm::RigidContact::Stick}};
+
+// Boundary particles with prescribed motion. Angles in degrees, angular
+// velocities in degrees per second (a number about z in 2D, a vector in 3D).
+mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
+                                     const DemContext& ctx) {
+  mpm::RigidBodyParams b;
+  detail::read_box(r, "box", ctx, b.min, b.max);
+  for (int d = 0; d < ctx.dimension; ++d)
+    if (b.min[d] < s.grid.lo[d] || b.max[d] > s.grid.hi[d])
+      r.fail("box", "expected a box inside the [grid] (min to max)");
+  const auto per_cell = r.integer("points_per_cell", b.per_cell);
+  r.expect(per_cell >= 1 && per_cell <= 8, "points_per_cell", "an integer in [1, 8]");
+  b.per_cell = static_cast<int>(per_cell);
+  b.contact = r.enumeration("contact", kContacts, b.contact);
+  if (b.contact == mpm::RigidContact::Friction)
+    b.friction = number_in(r, "friction", 0.0, non_negative());
+  else
+    r.reject({"friction"}, "is only used with contact = \"friction\"");
+  if (auto m = r.optional_table("motion")) {
+    b.motion.velocity = detail::point_or(*m, "velocity", ctx, Vec3::Zero());
+    if (ctx.dimension == 2) {
+      b.motion.angular_velocity = Vec3(0.0, 0.0, deg2rad(m->number("angular_velocity", 0.0)));
+    } else {
+      b.motion.angular_velocity = m->vec3("angular_velocity", Vec3::Zero()) * (M_PI / 180.0);
+    }
+    b.motion.hinge = detail::point_or(*m, "hinge", ctx, Vec3::Zero());
+    b.motion.start = number_in(*m, "start", 0.0, non_negative());
+    b.motion.stop = number_in(*m, "stop", b.motion.stop, positive());
+    m->expect(b.motion.stop > b.motion.start, "stop", "a time after start");
+    m->finish();
+  }
+  if (ctx.dimension == 2) {
+    b.angle = r.angle("angle", 0.0);
+  } else {
+    r.reject({"angle"}, "is only available in 2D (turn a 3D body with motion instead)");
+  }
+  r.finish();
+  return b;
+}
+
 }  // namespace
 
 mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
   TomlReader root(file.table, file.path);
-  for (std::string_view key :
-       {"method", "name", "description", "run", "grid", "materials", "bodies", "output"})
+  for (std::string_view key : {"method", "name", "description", "run", "grid", "materials",
+                               "bodies", "rigid_bodies", "output"})
     root.mark_read(key);
   root.finish();
   mpm::MpmScenario s;
@@ -168,6 +210,7 @@ mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
   std::vector<TomlReader> bodies = root.tables("bodies");
   if (bodies.empty()) root.fail("bodies", "missing: at least one [[bodies]] table");
   for (auto& b : bodies) s.bodies.push_back(read_body(b, s, ctx));
+  for (auto& b : root.tables("rigid_bodies")) s.rigid_bodies.push_back(read_rigid_body(b, s, ctx));
   if (auto out = root.optional_table("output")) {
     s.output.series_interval = number_in(*out, "series_interval", 0.0, non_negative());
     s.output.snapshot_interval = number_in(*out, "snapshot_interval", 0.0, non_negative());
@@ -231,12 +274,34 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
     if (b.geostatic) j["k0"] = mpm::resolved_k0(b, s.materials[b.material_index]);
     bodies.push_back(j);
   }
+  J rigid = J::array();
+  for (const auto& b : s.rigid_bodies) {
+    const auto& m = b.motion;
+    J motion = {{"velocity", point(m.velocity)}};
+    if (dim == 2)
+      motion["angular_velocity"] = rad2deg(m.angular_velocity.z());
+    else
+      motion["angular_velocity"] = point(m.angular_velocity * (180.0 / M_PI));
+    motion["hinge"] = point(m.hinge);
+    motion["start"] = m.start;
+    if (std::isfinite(m.stop)) motion["stop"] = m.stop;
+    J j = {{"box", {{"min", point(b.min)}, {"max", point(b.max)}}},
+           {"points_per_cell", b.per_cell},
+           {"contact", detail::name_of(kContacts, b.contact)}};
+    if (b.contact == mpm::RigidContact::Friction) j["friction"] = b.friction;
+    if (dim == 2) j["angle"] = rad2deg(b.angle);
+    j["motion"] = motion;
+    rigid.push_back(j);
+  }
   J output = {{"series_interval", s.output.series_interval},
               {"snapshot_interval", s.output.snapshot_interval},
               {"snapshots", s.output.snapshots}};
-  return J{{"method", "mpm"},  {"name", s.name},  {"description", s.description},
-           {"run", run},       {"grid", grid},    {"materials", materials},
-           {"bodies", bodies}, {"output", output}};
+  J out = {{"method", "mpm"}, {"name", s.name}, {"description", s.description},
+           {"run", run},      {"grid", grid},   {"materials", materials},
+           {"bodies", bodies}};
+  if (!rigid.empty()) out["rigid_bodies"] = rigid;
+  out["output"] = output;
+  return out;
 }
 
 std::string mpm_scenario_to_toml(const mpm::MpmScenario& s) {

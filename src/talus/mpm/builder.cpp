@@ -1,11 +1,80 @@
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "talus/core/error.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
+
+namespace {
+
+// Centres of n^D equal sub-boxes of [lo, hi] with n = round(extent / dx) per axis.
+template <int D>
+std::vector<typename Space<D>::Vec> fill_box(const typename Space<D>::Vec& lo,
+                                             const typename Space<D>::Vec& hi, double dx,
+                                             double& volume) {
+  using Vec = typename Space<D>::Vec;
+  std::array<int, D> count;
+  Vec spacing;
+  volume = 1.0;
+  int total = 1;
+  for (int d = 0; d < D; ++d) {
+    count[d] = std::max(1, static_cast<int>(std::round((hi[d] - lo[d]) / dx)));
+    spacing[d] = (hi[d] - lo[d]) / count[d];
+    volume *= spacing[d];
+    total *= count[d];
+  }
+  std::vector<Vec> points;
+  points.reserve(total);
+  for (int k = 0; k < total; ++k) {
+    int rest = k;
+    Vec x;
+    for (int d = 0; d < D; ++d) {
+      x[d] = lo[d] + (rest % count[d] + 0.5) * spacing[d];
+      rest /= count[d];
+    }
+    points.push_back(x);
+  }
+  return points;
+}
+
+}  // namespace
+
+template <int D>
+RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size) {
+  using Vec = typename Space<D>::Vec;
+  RigidBody<D> body;
+  double volume = 0.0;
+  body.x =
+      fill_box<D>(Space<D>::from3(p.min), Space<D>::from3(p.max), cell_size / p.per_cell, volume);
+  body.weight.assign(body.x.size(), volume);
+  // Outward normal of the nearest face; the mean of the nearest ones at ties
+  // (edges, corners).
+  const Vec lo = Space<D>::from3(p.min), hi = Space<D>::from3(p.max);
+  for (const Vec& y : body.x) {
+    double nearest = 1e300;
+    for (int d = 0; d < D; ++d) nearest = std::min({nearest, y[d] - lo[d], hi[d] - y[d]});
+    Vec n = Vec::Zero();
+    for (int d = 0; d < D; ++d) {
+      if (y[d] - lo[d] <= nearest * (1.0 + 1e-9)) n[d] -= 1.0;
+      if (hi[d] - y[d] <= nearest * (1.0 + 1e-9)) n[d] += 1.0;
+    }
+    body.normal.push_back(n.normalized());
+  }
+  body.motion = p.motion;
+  body.hinge = Space<D>::from3(p.motion.hinge);
+  body.contact = p.contact;
+  body.friction = p.friction;
+  if constexpr (D == 2) {
+    const Eigen::Matrix2d q = Eigen::Rotation2Dd(p.angle).toRotationMatrix();
+    for (Vec& y : body.x) y = body.hinge + q * (y - body.hinge);
+    for (Vec& n : body.normal) n = q * n;
+    body.angle = p.angle;
+  }
+  return body;
+}
 
 double resolved_k0(const BodyParams& body, const MaterialParams& m) {
   if (body.k0 > 0.0) return body.k0;
@@ -77,9 +146,19 @@ Solver<D> build_mpm(const MpmScenario& sc) {
                            body.material_index, s);
     }
   }
+  for (std::size_t b = 0; b < sc.rigid_bodies.size(); ++b) {
+    solver.rigid_bodies.push_back(build_rigid_body<D>(sc.rigid_bodies[b], h));
+    for (const Vec& y : solver.rigid_bodies.back().x)
+      for (int d = 0; d < D; ++d)
+        if (y[d] < sc.grid.lo[d] - 1e-12 || y[d] > sc.grid.hi[d] + 1e-12)
+          throw InputError(fmt::format(
+              "[[rigid_bodies]] #{}: boundary particles lie outside the [grid]", b + 1));
+  }
   return solver;
 }
 
+template RigidBody<2> build_rigid_body<2>(const RigidBodyParams&, double);
+template RigidBody<3> build_rigid_body<3>(const RigidBodyParams&, double);
 template Solver<2> build_mpm<2>(const MpmScenario&);
 template Solver<3> build_mpm<3>(const MpmScenario&);
 

@@ -84,6 +84,22 @@ void MpmOutputs<D>::on_snapshot(const Solver<D>& s) {
     f.extra_scalars["stress_yz"] = syz;
   }
   particles_->add(s.time, f);
+  if (s.rigid_bodies.empty()) return;
+  if (!boundary_) boundary_ = std::make_unique<io::PvdSeries>(dir_, "boundary", false);
+  io::ParticleFrame b;
+  for (std::size_t r = 0; r < s.rigid_bodies.size(); ++r) {
+    const auto& body = s.rigid_bodies[r];
+    for (std::size_t i = 0; i < body.x.size(); ++i) {
+      b.position.push_back(Space<D>::to3(body.x[i]));
+      b.velocity.push_back(Space<D>::to3(body.velocity_at(body.x[i], s.time, s.last_dt)));
+      b.angular_velocity.push_back(Vec3::Zero());
+      b.radius.push_back(0.5 * std::pow(body.weight[i], 1.0 / D));
+      b.id.push_back(static_cast<int64_t>(b.id.size()));
+      b.material.push_back(static_cast<int>(r));
+      b.contacts.push_back(0);
+    }
+  }
+  boundary_->add(s.time, b);
 }
 
 template <int D>

@@ -1,7 +1,8 @@
 #pragma once
 // Turns the state of an MPM run into the files of its output folder: the time
 // series (series.csv) and ParaView snapshots of the material points
-// (particles.pvd) with stress, plastic strain and c/c0. The solver knows
+// (particles.pvd) with stress, plastic strain and c/c0, and the boundary
+// particles of the rigid bodies (boundary.pvd). The solver knows
 // nothing of files and the io writers nothing of physics; this sits between.
 #include <filesystem>
 #include <functional>
@@ -37,6 +38,7 @@ class MpmOutputs final : public MpmObserver<D> {
   std::vector<double> c0_;
   std::unique_ptr<io::CsvSeries> series_;
   std::unique_ptr<io::PvdSeries> particles_;
+  std::unique_ptr<io::PvdSeries> boundary_;  // boundary particles of rigid bodies, if any
   bool first_ = true;
 };
 

@@ -7,6 +7,7 @@
 
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/materials.hpp"
+#include "talus/mpm/rigid.hpp"
 #include "talus/mpm/solver.hpp"
 
 namespace talus::mpm {
@@ -32,6 +33,17 @@ struct BodyParams {
   double k0 = 0.0;
 };
 
+// A rigid body of boundary particles (per_cell^D per cell) filling a box that
+// is then turned by `angle` about the hinge (2D), with a prescribed motion.
+struct RigidBodyParams {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  int per_cell = 2;
+  double angle = 0.0;  // rad, initial rotation about motion.hinge (2D)
+  RigidMotion motion;
+  RigidContact contact = RigidContact::Friction;
+  double friction = 0.0;
+};
+
 struct MpmOutputParams {
   double series_interval = 0.0;    // s; 0 = 200 rows over the run
   double snapshot_interval = 0.0;  // s; 0 = first and last only
@@ -46,6 +58,7 @@ struct MpmScenario {
   GridParams grid;
   std::vector<MaterialParams> materials;
   std::vector<BodyParams> bodies;
+  std::vector<RigidBodyParams> rigid_bodies;
   MpmOutputParams output;
 };
 
@@ -53,6 +66,10 @@ struct MpmScenario {
 // body lies outside the grid or the GIMP particle would be wider than a cell.
 template <int D>
 Solver<D> build_mpm(const MpmScenario& sc);
+
+// The boundary particles of a rigid body on a grid of the given cell size.
+template <int D>
+RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size);
 
 // K0 used for a body's geostatic stress.
 double resolved_k0(const BodyParams& body, const MaterialParams& material);

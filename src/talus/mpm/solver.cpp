@@ -33,6 +33,10 @@ double Solver<D>::time_step() const {
     const double c = wave_speed(materials[particles.material[i]]);
     speed = std::max(speed, c + particles.v[i].norm());
   }
+  // A rigid body moves material at its own speed, carried by the same waves.
+  double rigid_speed = 0.0;
+  for (const auto& r : rigid_bodies) rigid_speed = std::max(rigid_speed, r.max_speed(time));
+  speed += rigid_speed;
   double dt = speed > 0.0 ? params.cfl * grid.h / speed : params.cfl * grid.h;
   // Explicit viscosity is stable for dt < rho h^2 / (2 D eta).
   for (const auto& m : materials)
@@ -156,6 +160,10 @@ void Solver<D>::step_with(double dt) {
     grid.velocity[a] = v + dt / m * f;
   }
   grid.constrain(grid.velocity_old);
+  if (!rigid_bodies.empty()) {
+    rigid_to_grid<Shape>(dt);
+    rigid_contact(mass_floor);
+  }
   grid.constrain(grid.velocity);
 
   // 3. grid -> particles: velocities (and for USL positions and gradients)
@@ -204,10 +212,62 @@ void Solver<D>::step_with(double dt) {
     }
   }
 
-  // 5. volumes and stresses
+  // 5. volumes and stresses; the rigid bodies move on exactly
   update_stresses(dt);
+  for (auto& r : rigid_bodies) r.advance(time, dt);
   for (std::int64_t p = 0; p < n; ++p)
     if (!particles.v[p].allFinite() || !particles.x[p].allFinite()) left_grid(time + dt, p);
+}
+
+// Weights, prescribed momenta and surface normals of the boundary particles
+// on the nodes (serial: boundary particles are few and cheap).
+template <int D>
+template <class Shape>
+void Solver<D>::rigid_to_grid(double dt) {
+  rigid_nodes_.resize(rigid_bodies.size());
+  const double l = params.gimp_half_width;
+  for (std::size_t b = 0; b < rigid_bodies.size(); ++b) {
+    const RigidBody<D>& body = rigid_bodies[b];
+    RigidNodes<D>& nodes = rigid_nodes_[b];
+    nodes.reset(grid.nodes());
+    Stencil<D, Shape> st;
+    for (std::size_t p = 0; p < body.x.size(); ++p) {
+      if (!st.compute(grid, body.x[p], l))
+        throw RunError(fmt::format(
+            "t = {:.6g} s: boundary particle {} of rigid body {} left the grid; enlarge [grid]",
+            time, p, b + 1));
+      const Vec v = body.velocity_at(body.x[p], time, dt);
+      const double w = body.weight[p];
+      for (int k = 0; k < st.count; ++k) {
+        if (st.w[k] <= 0.0) continue;
+        const auto a = st.node[k];
+        if (nodes.weight[a] == 0.0) nodes.touched.push_back(a);
+        nodes.weight[a] += w * st.w[k];
+        nodes.momentum[a] += w * st.w[k] * v;
+        nodes.normal[a] += w * st.w[k] * body.normal[p];
+      }
+    }
+  }
+}
+
+template <int D>
+void Solver<D>::rigid_contact(double mass_floor) {
+  for (std::size_t b = 0; b < rigid_bodies.size(); ++b) {
+    const RigidBody<D>& body = rigid_bodies[b];
+    const RigidNodes<D>& nodes = rigid_nodes_[b];
+    for (const auto a : nodes.touched) {
+      if (grid.mass[a] <= mass_floor) continue;
+      const Vec vr = nodes.momentum[a] / nodes.weight[a];
+      const double g = nodes.normal[a].norm();
+      // Stick, or no normal (opposite faces cancel): the rigid velocity.
+      if (body.contact == RigidContact::Stick || g == 0.0) {
+        grid.velocity[a] = vr;
+        continue;
+      }
+      grid.velocity[a] =
+          friction_contact<Vec>(grid.velocity[a], vr, -nodes.normal[a] / g, body.friction);
+    }
+  }
 }
 
 template <int D>

@@ -15,6 +15,7 @@
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/materials.hpp"
 #include "talus/mpm/particles.hpp"
+#include "talus/mpm/rigid.hpp"
 
 namespace talus::mpm {
 
@@ -40,6 +41,8 @@ class Solver {
 
   Grid<D> grid;
   Particles<D> particles;
+  // Boundary particles with prescribed motion, in contact with the material.
+  std::vector<RigidBody<D>> rigid_bodies;
   std::vector<Material> materials;
   SolverParams params;
   double time = 0.0;
@@ -61,6 +64,10 @@ class Solver {
   void step_with(double dt);
   template <class Shape>
   void to_grid(bool forces);
+  template <class Shape>
+  void rigid_to_grid(double dt);
+  // The material velocity at the nodes shared with a rigid body, corrected.
+  void rigid_contact(double mass_floor);
   void update_stresses(double dt);
 
   std::vector<std::vector<int>> by_material_;
@@ -68,7 +75,8 @@ class Solver {
     std::vector<double> mass;
     std::vector<Vec> momentum, force;
   };
-  std::vector<NodeBuffer> buffers_;  // one per thread
+  std::vector<NodeBuffer> buffers_;         // one per thread
+  std::vector<RigidNodes<D>> rigid_nodes_;  // one per rigid body
 };
 
 }  // namespace talus::mpm
