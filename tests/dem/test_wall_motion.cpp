@@ -57,7 +57,7 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
   const std::string stl = ::testing::TempDir() + "/tiled_floor.stl";
   geometry::write_stl(stl, tris, true);
 
-  auto rebound = [&](bool mesh, std::size_t* candidates) {
+  auto rebound = [&](bool mesh, std::size_t* candidates, Vec3 at = Vec3(0.0033, 0.0071, 0)) {
     DemScenario sc = scenario(3, ContactModel::HertzMindlin, 1e-6, Vec3::Zero());
     sc.materials = {hertz_material("glass", 2500, 1e7, 0.3, 0.5, 0.5), rigid_material("steel")};
     if (mesh) {
@@ -71,7 +71,7 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
       sc.walls.push_back(floor_wall<3>("steel"));
     }
     // Inside one triangle, far from its edges compared with the contact radius (~0.1 mm).
-    add_balls(sc, {ball(Vec3(0.0033, 0.0071, 1.05 * r), Vec3(0, 0, -0.1), r, "glass")});
+    add_balls(sc, {ball(at + Vec3(0, 0, 1.05 * r), Vec3(0, 0, -0.1), r, "glass")});
     auto run = build_dem<3>(sc, {});
     RunControl c;
     c.duration = 2e-3;
@@ -88,6 +88,15 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
   EXPECT_NEAR(on_mesh, on_plane, 1e-12);
   EXPECT_GE(candidates, 1u);
   EXPECT_LE(candidates, 8u);  // of 800
+  // Straight above a vertex shared by six triangles, the middle of an edge
+  // shared by two and the middle of a diagonal: one contact each, so the same
+  // rebound as on the plane (counted per triangle it would be 6 or 2 times
+  // stiffer, and rebound differently).
+  for (const Vec3& at : {Vec3(0, 0, 0), Vec3(0.005, 0, 0), Vec3(0.005, 0.005, 0)}) {
+    std::size_t near = 0;
+    EXPECT_NEAR(rebound(true, &near, at), rebound(false, nullptr, at), 1e-12) << at.transpose();
+    EXPECT_GE(near, 2u);  // several triangles were candidates
+  }
 }
 
 // Settling happens before t = 0 with every wall in place, even a gate removed

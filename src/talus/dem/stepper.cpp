@@ -14,6 +14,7 @@
 #include "talus/dem/force_target.hpp"
 #include "talus/dem/hertz_pairs.hpp"
 #include "talus/dem/kuen_rolling.hpp"
+#include "talus/geometry/mesh_contacts.hpp"
 
 namespace talus::dem {
 
@@ -536,12 +537,40 @@ class Stepper final : public StepperBase<D> {
         p.contacts[i] = c;
       }
       p.wall_contacts[i] = 0;
-      for (int k = nl.wall_start[i]; k < nl.wall_start[i + 1]; ++k) {
+      const int first = nl.wall_start[i], count = nl.wall_start[i + 1] - first;
+      // Several candidate triangles: find them all first, so that a shared
+      // edge or vertex of a mesh counts once (geometry/mesh_contacts.hpp).
+      const bool dedupe = D == 3 && count > 1;
+      thread_local std::vector<geometry::Closest<D>> near;
+      thread_local std::vector<char> hit;
+      if (dedupe) {
+        thread_local std::vector<const geometry::Primitive*> prims;
+        thread_local std::vector<int> walls;
+        near.resize(count);
+        hit.resize(count);
+        prims.resize(count);
+        walls.resize(count);
+        for (int j = 0; j < count; ++j) {
+          const int prim = nl.wall_prim[first + j];
+          prims[j] = &s_.primitives[prim];
+          walls[j] = s_.primitive_wall[prim];
+          hit[j] = active_[walls[j]] &&
+                   geometry::closest_point<D>(*prims[j], p.x[i], p.r[i], near[j]) &&
+                   near[j].distance < p.r[i];
+        }
+        geometry::drop_shared_features<D>(prims.data(), walls.data(), near.data(), hit.data(),
+                                          count, p.r[i]);
+      }
+      for (int k = first; k < first + count; ++k) {
         const int prim = nl.wall_prim[k];
         const int w = s_.primitive_wall[prim];
         geometry::Closest<D> c;
-        if (!active_[w] || !geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) ||
-            c.distance >= p.r[i]) {
+        const bool touches =
+            dedupe ? (c = near[k - first], hit[k - first] != 0)
+                   : active_[w] &&
+                         geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) &&
+                         c.distance < p.r[i];
+        if (!touches) {
           nl.wall_history[k] = ContactHistory<D>{};
           continue;
         }
