@@ -5,10 +5,22 @@
 
 #include "talus/core/version.hpp"
 #include "talus/io/scenario.hpp"
-#include "talus/io/scenario_runout.hpp"
 #include "talus/io/scenario_mpm.hpp"
+#include "talus/io/scenario_runout.hpp"
 
 namespace talus::app {
+
+namespace {
+
+// Written next to the final name and renamed, so a reader never sees half a file.
+void write_summary_file(nlohmann::json& j, const RunSummary& summary, const std::string& error) {
+  if (!error.empty()) j["error"] = error;
+  const auto tmp = summary.output / "summary.json.tmp";
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  std::filesystem::rename(tmp, summary.output / "summary.json");
+}
+
+}  // namespace
 
 template <int D>
 void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
@@ -59,11 +71,7 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
         {"walls", walls}}},
   };
   for (const auto& [name, value] : summary.analysis.items()) j[name] = value;
-  if (!error.empty()) j["error"] = error;
-  const auto path = summary.output / "summary.json";
-  const auto tmp = summary.output / "summary.json.tmp";
-  std::ofstream(tmp) << j.dump(2) << "\n";
-  std::filesystem::rename(tmp, path);
+  write_summary_file(j, summary, error);
 }
 
 template void write_dem_summary<2>(const dem::DemScenario&, const dem::DemRun<2>&,
@@ -117,10 +125,7 @@ void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanMod
         {"max_depth_m", r.max_depth},
         {"kinetic_energy_J", model.kinetic_energy()}}},
   };
-  if (!error.empty()) j["error"] = error;
-  const auto tmp = summary.output / "summary.json.tmp";
-  std::ofstream(tmp) << j.dump(2) << "\n";
-  std::filesystem::rename(tmp, summary.output / "summary.json");
+  write_summary_file(j, summary, error);
 }
 
 // --- MPM ---
@@ -168,11 +173,7 @@ void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& s,
         {"yielding_points", yielding},
         {"cracked_points", cracked}}},
   };
-  if (!error.empty()) j["error"] = error;
-  const auto path = summary.output / "summary.json";
-  const auto tmp = summary.output / "summary.json.tmp";
-  std::ofstream(tmp) << j.dump(2) << "\n";
-  std::filesystem::rename(tmp, path);
+  write_summary_file(j, summary, error);
 }
 
 template void write_mpm_summary<2>(const mpm::MpmScenario&, const mpm::Solver<2>&,
@@ -233,10 +234,7 @@ void write_fv2d_summary(const runout::RunoutScenario& sc, const runout::Fv2dSolv
         {"at_rest", solver.at_rest()},
         {"kinetic_energy_J", solver.kinetic_energy()}}},
   };
-  if (!error.empty()) j["error"] = error;
-  const auto tmp = summary.output / "summary.json.tmp";
-  std::ofstream(tmp) << j.dump(2) << "\n";
-  std::filesystem::rename(tmp, summary.output / "summary.json");
+  write_summary_file(j, summary, error);
 }
 
 }  // namespace talus::app
