@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "fv2d_helpers.hpp"
+#include "point_mass.hpp"
 #include "talus/core/space.hpp"
 #include "talus/runout/grid/path_terrain.hpp"
 
@@ -156,28 +157,6 @@ TEST(Fv2dAnalytic, FrictionlessLayerKeepsItsEnergyThroughACurve) {
               (ke + potential(s) - e0) / ke, s.momentum_x() / s.mass(), std::sqrt(2 * kG * drop));
 }
 
-// Point mass along the path with the centripetal term, RK4 (as the DAN test).
-double point_mass_stop(const RunoutPath& path, double s0, double tan_phi) {
-  double s = s0, v = 0;
-  const double h = 1e-5;
-  auto accel = [&](double s_, double v_) {
-    const double th = path.angle(s_);
-    const double normal = std::max(0.0, kG * std::cos(th) + v_ * v_ * path.curvature(s_));
-    return -kG * std::sin(th) - normal * tan_phi;
-  };
-  for (int k = 0; k < 10000000; ++k) {
-    const double k1v = accel(s, v), k1s = v;
-    const double k2v = accel(s + 0.5 * h * k1s, v + 0.5 * h * k1v), k2s = v + 0.5 * h * k1v;
-    const double k3v = accel(s + 0.5 * h * k2s, v + 0.5 * h * k2v), k3s = v + 0.5 * h * k2v;
-    const double k4v = accel(s + h * k3s, v + h * k3v), k4s = v + h * k3v;
-    const double vn = v + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-    if (vn <= 0) return s;
-    s += h / 6 * (k1s + 2 * k2s + 2 * k3s + k4s);
-    v = vn;
-  }
-  return s;
-}
-
 TEST(Fv2dAnalytic, PileStopsWherePointMassStops) {
   // The DAN case (test_dan_verification.cpp): a short pile, 5 cm long and
   // 1 cm deep, k = 1, on a 30 deg incline from 1 m height onto a flat, the
@@ -201,7 +180,7 @@ TEST(Fv2dAnalytic, PileStopsWherePointMassStops) {
     s.step(std::min(s.stable_time_step(), 0.01));
   ASSERT_TRUE(s.at_rest());
   const double x_stop =
-      path.point(point_mass_stop(path, path.s_at_x(x0), std::tan(deg2rad(phi)))).x();
+      path.point(reference::point_mass_stop(path, path.s_at_x(x0), std::tan(deg2rad(phi)), kG)).x();
   EXPECT_NEAR(centre_x(s), x_stop, 0.5 * len);
   std::printf("stop: centre %.4f, point mass %.4f, energy line %.4f\n", centre_x(s), x_stop,
               x0 + path.point(path.s_at_x(x0)).y() / std::tan(deg2rad(phi)));
