@@ -19,16 +19,16 @@
 #include "talus/dem/checkpoint.hpp"
 #include "talus/dem/driver.hpp"
 #include "talus/dem/output_observer.hpp"
-#include "talus/io/scenario.hpp"
 #include "talus/io/compare_file.hpp"
+#include "talus/io/scenario.hpp"
+#include "talus/io/scenario_mpm.hpp"
 #include "talus/io/scenario_runout.hpp"
+#include "talus/mpm/output_observer.hpp"
+#include "talus/mpm/scenario.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
 #include "talus/runout/grid/fv2d_output.hpp"
 #include "talus/runout/output_observer.hpp"
-#include "talus/io/scenario_mpm.hpp"
-#include "talus/mpm/scenario.hpp"
-#include "talus/mpm/output_observer.hpp"
 
 namespace fs = std::filesystem;
 
@@ -87,8 +87,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   if constexpr (D == 2) {
     if (sc.flume) {
       const auto& f = *sc.flume;
-      const auto geometry =
-          geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+      const auto geometry = geometry::make_flume(f);
       flume = std::make_unique<analysis::FlumeObserver>(out, geometry, f, run->system, resume,
                                                         run->system.time);
       outputs.decorate = [&flume](const dem::DemSystem<2>& s, io::ParticleFrame& frame) {
@@ -202,8 +201,8 @@ int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunO
     };
   mpm::MpmRunControl control;
   control.duration = sc.duration;
-  control.series_interval = sc.output.series_interval > 0 ? sc.output.series_interval
-                                                          : sc.duration / 200.0;
+  control.series_interval =
+      sc.output.series_interval > 0 ? sc.output.series_interval : sc.duration / 200.0;
   control.snapshot_interval = sc.output.snapshots ? sc.output.snapshot_interval : -1.0;
   RunSummary summary;
   summary.output = out;
@@ -228,8 +227,8 @@ int run_mpm_command(const io::ScenarioFile& file, const RunOptions& opt) {
   if (!opt.resume.empty())
     throw InputError(opt.resume + ": resuming is not available for MPM runs yet");
   const auto sc = io::parse_mpm_scenario(file);
-  const fs::path out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
-                                       : fs::path(opt.out);
+  const fs::path out =
+      opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name) : fs::path(opt.out);
   prepare_output(out, opt.force);
   std::ofstream(out / "scenario.toml") << io::mpm_scenario_to_toml(sc);
   return sc.dimension == 2 ? run_mpm_scenario<2>(sc, out, opt) : run_mpm_scenario<3>(sc, out, opt);
@@ -308,8 +307,8 @@ int validate_command(const ValidateOptions& opt) {
       const auto s = mpm::build_mpm<3>(sc);
       n = s.particles.size(), dt = s.time_step();
     }
-    fmt::print("{}: valid ({}D MPM, {} points, {} materials, first time step {:.3g} s)\n",
-               opt.file, sc.dimension, n, sc.materials.size(), dt);
+    fmt::print("{}: valid ({}D MPM, {} points, {} materials, first time step {:.3g} s)\n", opt.file,
+               sc.dimension, n, sc.materials.size(), dt);
     return 0;
   }
   const auto sc = io::parse_dem_scenario(file);

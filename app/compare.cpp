@@ -34,18 +34,19 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
     const auto sc = io::parse_dem_scenario(file);
     if (!sc.flume) throw InputError(path + ": the DEM scenario of a comparison needs a [flume]");
     const auto& f = *sc.flume;
-    return geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+    return geometry::make_flume(f);
   }
   if (method == "dan") {
     const auto sc = io::parse_runout_scenario(file);
     if (sc.model != runout::RunoutModel::Dan || sc.path.kind != runout::PathKind::Flume)
-      throw InputError(path + ": the DAN scenario of a comparison needs model = \"dan\" on a "
-                              "[path] of type \"flume\"");
+      throw InputError(path +
+                       ": the DAN scenario of a comparison needs model = \"dan\" on a "
+                       "[path] of type \"flume\"");
     return geometry::make_flume(sc.path.beta_deg, sc.path.arc_radius, sc.path.l_star,
                                 sc.path.barrier_length);
   }
-  throw InputError(fmt::format("{}: method '{}' cannot take part in a flume comparison yet",
-                               path, method));
+  throw InputError(
+      fmt::format("{}: method '{}' cannot take part in a flume comparison yet", path, method));
 }
 
 bool same_flume(const geometry::FlumeGeometry& a, const geometry::FlumeGeometry& b) {
@@ -118,7 +119,9 @@ void write_pairs(const fs::path& path, const char* a, const char* b, const std::
 }
 
 std::string cell(double v) { return std::isnan(v) ? "-" : fmt::format("{:.3f}", v); }
-nlohmann::json json_number(double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); }
+nlohmann::json json_number(double v) {
+  return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
+}
 
 }  // namespace
 
@@ -137,9 +140,10 @@ int compare_command(const CompareOptions& opt) {
       throw InputError(fmt::format("{}: [methods] has no '{}' (--methods)", opt.file, m));
     flumes.push_back(flume_of(m, file.methods.at(m)));
     if (!same_flume(flumes.front(), flumes.back()))
-      throw InputError(fmt::format("{}: the {} and {} scenarios describe different flumes "
-                                   "(beta, R, L*, barrier length must agree)",
-                                   opt.file, methods.front(), m));
+      throw InputError(
+          fmt::format("{}: the {} and {} scenarios describe different flumes "
+                      "(beta, R, L*, barrier length must agree)",
+                      opt.file, methods.front(), m));
   }
   const fs::path out =
       opt.out.empty() ? fs::path("runs") / ("compare-" + file.name) : fs::path(opt.out);

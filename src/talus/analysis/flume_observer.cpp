@@ -6,8 +6,8 @@
 #include <cmath>
 #include <fstream>
 
-#include "talus/core/error.hpp"
 #include "talus/analysis/dam_break.hpp"
+#include "talus/core/error.hpp"
 #include "talus/io/csv_reader.hpp"
 
 namespace talus::analysis {
@@ -237,6 +237,11 @@ FlumeSeriesSummary summarise_front_series(const geometry::FlumeGeometry& g,
   if (rows.empty()) return out;
   const std::size_t t = col("time"), fs = col("front_s"), rs = col("runup_s"),
                     rh = col("runup_height");
+  std::size_t force[3][2];
+  for (int k = 0; k < 3; ++k) {
+    force[k][0] = col(std::string(kParts[k]) + "_fx");
+    force[k][1] = col(std::string(kParts[k]) + "_fy");
+  }
   const double end = rows.back()[t];
   double window = 0.0;
   double previous = rows.front()[t];
@@ -254,7 +259,7 @@ FlumeSeriesSummary summarise_front_series(const geometry::FlumeGeometry& g,
     if (late) window += dt;
     for (int k = 0; k < 3; ++k) {
       for (int c = 0; c < 2; ++c) {
-        const double f = row[col(std::string(kParts[k]) + (c == 0 ? "_fx" : "_fy"))];
+        const double f = row[force[k][c]];
         auto& peak = out.peak[k][c];
         if (std::abs(f) > std::abs(peak.value)) peak = {f, row[t]};
         out.impulse[k][c] += f * dt;

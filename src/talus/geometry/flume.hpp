@@ -83,4 +83,9 @@ FlumeGeometry make_flume(double beta_deg, double arc_radius,
                          std::optional<double> l_star = std::nullopt,
                          std::optional<double> barrier_length = std::nullopt);
 
+// The flume of a scenario's [flume] table.
+inline FlumeGeometry make_flume(const dem::FlumeParams& f) {
+  return make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+}
+
 }  // namespace talus::geometry

@@ -95,6 +95,8 @@ std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext&
 dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ctx);
 dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx);
 // Pieces of [[particles]] that [flume.release] shares.
+// box_min/box_max of a source from its polygon.
+void set_polygon_bounds(dem::ParticleSourceParams& s);
 void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s);
 std::optional<int> read_count(TomlReader& r);
 dem::SettleParams read_settle(TomlReader& r);

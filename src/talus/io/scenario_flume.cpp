@@ -27,11 +27,7 @@ dem::ParticleSourceParams read_release(TomlReader& r, const std::vector<Vec3>& p
   s.material = r.required_string("material");
   check_material(r, "material", s.material, ctx);
   s.polygon = polygon;
-  s.box_min = s.box_max = s.polygon.front();
-  for (const Vec3& p : s.polygon) {
-    s.box_min = s.box_min.cwiseMin(p);
-    s.box_max = s.box_max.cwiseMax(p);
-  }
+  set_polygon_bounds(s);
   s.radius_min = number_in(r, "radius_min", kReleaseRadiusMin, positive());
   s.radius_max = number_in(r, "radius_max", kReleaseRadiusMax, positive());
   if (s.radius_min > s.radius_max) {
@@ -74,7 +70,7 @@ void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
 
   geometry::FlumeGeometry g;
   try {
-    g = geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+    g = geometry::make_flume(f);
   } catch (const InputError& e) {
     r.fail("beta", e.what());
   }

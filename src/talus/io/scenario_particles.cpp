@@ -52,11 +52,7 @@ void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& 
   }
   r.expect(twice_area != 0.0, "polygon", "a polygon with a non-zero area");
   if (twice_area < 0.0) std::reverse(s.polygon.begin(), s.polygon.end());
-  s.box_min = s.box_max = s.polygon.front();
-  for (const Vec3& p : s.polygon) {
-    s.box_min = s.box_min.cwiseMin(p);
-    s.box_max = s.box_max.cwiseMax(p);
-  }
+  set_polygon_bounds(s);
 }
 
 void read_kind(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ctx) {
@@ -103,6 +99,14 @@ void read_kind(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ct
 }
 
 }  // namespace
+
+void set_polygon_bounds(dem::ParticleSourceParams& s) {
+  s.box_min = s.box_max = s.polygon.front();
+  for (const Vec3& p : s.polygon) {
+    s.box_min = s.box_min.cwiseMin(p);
+    s.box_max = s.box_max.cwiseMax(p);
+  }
+}
 
 void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s) {
   s.radius_min = required_number_in(r, "radius_min", positive());
