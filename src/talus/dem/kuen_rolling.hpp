@@ -30,17 +30,17 @@ class KuenRolling {
         u_rr_(c.kuen_wall_depth),
         mu_br_(c.kuen_particle_factor) {}
 
+  bool enabled() const { return enabled_; }
+
+  // Particle i at the end of a step, after its second half kick.
   template <int D>
-  void apply(Particles<D>& p, double dt) const {
-    if (!enabled_) return;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.wall_contacts[i] > 0) {
-        const double dw = kuen_wall_deceleration(g_, p.r[i], u_rr_) * dt;
-        const double w = Space<D>::rot_norm(p.w[i]);
-        p.w[i] = w > dw ? (p.w[i] * ((w - dw) / w)) : Space<D>::rot_zero();
-      }
-      if (p.contacts[i] > 0) p.w[i] = p.w[i] * mu_br_;
+  void apply(Particles<D>& p, std::size_t i, double dt) const {
+    if (p.wall_contacts[i] > 0) {
+      const double dw = kuen_wall_deceleration(g_, p.r[i], u_rr_) * dt;
+      const double w = Space<D>::rot_norm(p.w[i]);
+      p.w[i] = w > dw ? (p.w[i] * ((w - dw) / w)) : Space<D>::rot_zero();
     }
+    if (p.contacts[i] > 0) p.w[i] = p.w[i] * mu_br_;
   }
 
  private:

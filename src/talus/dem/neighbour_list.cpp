@@ -22,26 +22,30 @@ void NeighbourList<D>::build(Particles<D>& p, const std::vector<geometry::Primit
   old_wall_prim_.swap(wall_prim);
   old_wall_history_.swap(wall_history);
   const int n_old = static_cast<int>(p.size());
-  old_row_start_.assign(n_old + 1, 0);
-  for (const Pair& q : old_pairs_) ++old_row_start_[std::min(q.i, q.j) + 1];
-  for (int i = 0; i < n_old; ++i) old_row_start_[i + 1] += old_row_start_[i];
-  old_rows_.resize(old_pairs_.size());
+  if (old_wall_start_.size() != static_cast<std::size_t>(n_old) + 1)
+    old_wall_start_.assign(n_old + 1, 0);
+    // The steps of a build run as OpenMP tasks where they are independent: when
+    // the build runs inside `omp single`, the waiting threads take them.
+#pragma omp task default(shared)
   {
+    old_row_start_.assign(n_old + 1, 0);
+    for (const Pair& q : old_pairs_) ++old_row_start_[std::min(q.i, q.j) + 1];
+    for (int i = 0; i < n_old; ++i) old_row_start_[i + 1] += old_row_start_[i];
+    old_rows_.resize(old_pairs_.size());
     std::vector<int> fill(old_row_start_.begin(), old_row_start_.end() - 1);
     for (std::size_t k = 0; k < old_pairs_.size(); ++k)
       old_rows_[fill[std::min(old_pairs_[k].i, old_pairs_[k].j)]++] = static_cast<int>(k);
   }
-  if (old_wall_start_.size() != static_cast<std::size_t>(n_old) + 1)
-    old_wall_start_.assign(n_old + 1, 0);
-
   double r_max = 0.0;
   for (double r : p.r) r_max = std::max(r_max, r);
   const double cell = std::max(2.0 * r_max + skin, 1e-12);
-  sort_into_cells(p, cell);  // fills order_
-  find_pairs(p, cell);
+  sort_into_cells(p, cell);  // fills order_; waits for the task above
+#pragma omp task default(shared)
   find_walls(p, prims);
-  carry_history(p);
+#pragma omp task default(shared)
   x_ref_ = p.x;
+  find_pairs(p, cell);  // waits for the two tasks above
+  carry_history(p);
   ++builds;
 }
 

@@ -14,6 +14,7 @@
 #include "talus/dem/force_target.hpp"
 #include "talus/dem/hertz_pairs.hpp"
 #include "talus/dem/kuen_rolling.hpp"
+#include "talus/dem/thread_partition.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
 
 namespace talus::dem {
@@ -49,7 +50,12 @@ class Stepper final : public StepperBase<D> {
     update_walls(true);
     rebuild();
 #pragma omp parallel num_threads(s_.threads)
-    compute_forces();
+    {
+#pragma omp single
+      prepare_step(omp_get_num_threads());
+      compute_forces(nullptr);
+    }
+    close_forces();
   }
 
   void resume() override { update_walls(true); }
@@ -65,12 +71,16 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
-  // All threads run the whole step loop in one parallel region; the loops of
-  // a step are shared with `omp for`, the serial parts run on one thread.
+  // All threads run the whole step loop in one parallel region; each works
+  // on its share of the particles and pairs (dem/thread_partition.hpp), the
+  // serial parts run on one thread. A step ends without a barrier: its bookkeeping (wall forces,
+  // impulses, contact counts, the step counter) is done by the next step's serial part, or here
+  // after the last step.
   void advance(int64_t steps) override {
     error_ = nullptr;
 #pragma omp parallel num_threads(s_.threads)
     for (int64_t k = 0; k < steps && !error_; ++k) one_step();
+    if (step_open_) close_step();
     // Exceptions may not cross the parallel region: they are carried out here.
     if (error_) std::rethrow_exception(error_);
   }
@@ -115,8 +125,8 @@ class Stepper final : public StepperBase<D> {
     const int n = static_cast<int>(p.size());
     double moved = 0.0;
     // First half kick and drift in one pass over the particles.
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; ++i) {
+    const auto [i0, i1] = partition_.particle_range(n);
+    for (int i = i0; i < i1; ++i) {
       kick_one(p, i, half);
       p.x[i] += dt * p.v[i];
       const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
@@ -128,6 +138,7 @@ class Stepper final : public StepperBase<D> {
 #pragma omp barrier
 #pragma omp single
     {
+      if (step_open_) close_step();
       moved = max_moved_;
       max_moved_ = 0.0;
       s_.time = static_cast<double>(s_.step + 1) * dt;
@@ -139,18 +150,37 @@ class Stepper final : public StepperBase<D> {
       } catch (...) {
         error_ = std::current_exception();
       }
-      prepare_wall_accumulators();
-      prepare_step_counters();
-      prepare_thread_buffers(omp_get_num_threads(), static_cast<int>(p.size()));
+      if (!error_) {
+        prepare_step(omp_get_num_threads());
+        step_open_ = true;
+      }
     }
     if (error_) return;
-    compute_forces(true, &half);
-#pragma omp single
-    {
-      kuen_.apply(p, dt);
-      for (auto& w : s_.walls) w.impulse += w.force * dt;
-      ++s_.step;
-    }
+    compute_forces(&half);
+  }
+
+  // The step's serial set-up, once the particles have drifted.
+  void prepare_step(int team) {
+    ++force_pass_;
+    prepare_wall_accumulators();
+    pair_touching_ = 0;
+    wall_touching_ = 0;
+    if (team > 1) partition_.prepare(team, s_.particles, s_.neighbours);
+  }
+
+  // Wall forces and contact counts of the forces just computed.
+  void close_forces() {
+    s_.pair_contacts = pair_touching_;
+    s_.wall_contacts = wall_touching_;
+    sum_wall_accumulators();
+  }
+
+  // The bookkeeping of a finished step.
+  void close_step() {
+    close_forces();
+    for (auto& w : s_.walls) w.impulse += w.force * s_.dt;
+    ++s_.step;
+    step_open_ = false;
   }
 
   // Half kick of velocity Verlet, with PFC's optional local damping. A locked
@@ -333,28 +363,16 @@ class Stepper final : public StepperBase<D> {
     return true;
   }
 
-  // Called by every thread of the team (or by one thread outside a region).
-  void prepare_step_counters() {
-    pair_touching_ = 0;
-    wall_touching_ = 0;
-  }
-
-  // `prepared`: counters, accumulators and buffers were set up by the caller.
-  // `then_kick`: each particle gets this half kick as soon as its force is
-  // complete (in the pass that adds the wall forces).
-  void compute_forces(bool prepared = false, const Kick* then_kick = nullptr) {
+  // Pair forces, then wall forces and the optional half kick `then_kick`
+  // (each particle gets it as soon as its force is complete); called by every
+  // thread of the team after prepare_step. Ends without a barrier: a thread
+  // goes on with its own particles, the caller closes the forces once all
+  // threads are done.
+  void compute_forces(const Kick* then_kick) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int n = static_cast<int>(p.size());
     const std::size_t np = nl.pairs.size();
-    if (!prepared) {
-#pragma omp single
-      {
-        prepare_step_counters();
-        prepare_wall_accumulators();
-        prepare_thread_buffers(omp_get_num_threads(), n);
-      }
-    }
     int64_t touching = 0;
     if (omp_get_num_threads() <= 1) {
       for (int i = 0; i < n; ++i) {
@@ -366,14 +384,13 @@ class Stepper final : public StepperBase<D> {
                                p.f.data(), p.t.data(), p.contacts.data(),
                                0,          n - 1};
       touching = scatter_pairs(0, np, out);
-      finish_particles(false, then_kick);
+      finish_particles(then_kick, 0, n);
     } else {
-      // Race-free: each thread scatters its contiguous chunk of pairs into its
-      // own buffer, over the particle range that chunk touches (particles are
-      // sorted by cell, so the ranges are short and barely overlap); then each
-      // particle sums the buffers in thread order. Deterministic for a given
-      // thread count.
-      auto& buf = buffers_[omp_get_thread_num()];
+      // Each thread scatters its share of the pairs: forces on particles no
+      // other thread's pairs touch straight into the particle arrays, the
+      // others into its buffer (zeroed here over the range its pairs touch).
+      const int tid = omp_get_thread_num();
+      auto& buf = partition_.share(tid);
       for (int i = buf.lo; i <= buf.hi; ++i) {
         if (i >= buf.own_lo && i <= buf.own_hi) {
           p.f[i] = zero_of<Vec>();
@@ -388,18 +405,18 @@ class Stepper final : public StepperBase<D> {
       const ForceTarget<D> out{p.f.data(),   p.t.data(),          p.contacts.data(), buf.f.data(),
                                buf.t.data(), buf.contacts.data(), buf.own_lo,        buf.own_hi};
       touching = scatter_pairs(buf.k0, buf.k1, out);
-#pragma omp barrier
-      finish_particles(true, then_kick);
+      partition_.mark_scattered(tid, force_pass_);
+      // No barrier: first the particles no earlier thread's pairs reach, then,
+      // once those threads are done, the rest.
+      const int split = std::clamp(buf.wait_hi + 1, buf.p0, buf.p1);
+      partition_.sum_buffers(p, split, buf.p1);
+      finish_particles(then_kick, split, buf.p1);
+      partition_.wait_for_earlier(tid, force_pass_);
+      partition_.sum_buffers(p, buf.p0, split);
+      finish_particles(then_kick, buf.p0, split);
     }
 #pragma omp atomic
     pair_touching_ += touching;
-#pragma omp barrier
-#pragma omp single
-    {
-      s_.pair_contacts = pair_touching_;
-      s_.wall_contacts = wall_touching_;
-      sum_wall_accumulators();
-    }
   }
 
   // Forces of pairs [k0, k1) added into `out`; returns the number of
@@ -420,58 +437,6 @@ class Stepper final : public StepperBase<D> {
       ++touching;
     }
     return touching;
-  }
-
-  // Per-thread force buffers and the particle range each thread's pair chunk
-  // touches; the ranges change only when the neighbour list is rebuilt.
-  struct ThreadBuffer {
-    std::vector<Vec> f;
-    std::vector<Rot> t;
-    std::vector<int> contacts;
-    int lo = 0, hi = -1;
-    int own_lo = 0, own_hi = -1;  // part of [lo, hi] no other thread touches
-    std::size_t k0 = 0, k1 = 0;   // the thread's chunk of pairs
-  };
-  void prepare_thread_buffers(int nt, int n) {
-    if (nt <= 1) return;
-    const auto& pairs = s_.neighbours.pairs;
-    if (static_cast<int>(buffers_.size()) == nt && buffers_built_ == s_.neighbours.builds &&
-        static_cast<int>(buffers_[0].f.size()) == n)
-      return;
-    buffers_.resize(nt);
-    const std::size_t np = pairs.size();
-    // Equal numbers of pairs per thread (weighting touching pairs more was
-    // measured and did not help: the wall loop's imbalance goes the other way).
-    for (int t = 0; t < nt; ++t) {
-      buffers_[t].k0 = np * t / nt;
-      buffers_[t].k1 = np * (t + 1) / nt;
-    }
-    for (int t = 0; t < nt; ++t) {
-      auto& b = buffers_[t];
-      b.f.resize(n);
-      b.t.resize(n);
-      b.contacts.resize(n);
-      b.lo = n;
-      b.hi = -1;
-      for (std::size_t k = b.k0; k < b.k1; ++k) {
-        b.lo = std::min({b.lo, pairs[k].i, pairs[k].j});
-        b.hi = std::max({b.hi, pairs[k].i, pairs[k].j});
-      }
-    }
-    // Chunks follow the particle order, so the ranges overlap only at their
-    // ends: what lies beyond every other range is the thread's own.
-    for (int t = 0; t < nt; ++t) {
-      auto& b = buffers_[t];
-      b.own_lo = b.lo;
-      b.own_hi = b.hi;
-      for (int u = 0; u < nt; ++u) {
-        const auto& o = buffers_[u];
-        if (u == t || o.hi < o.lo) continue;
-        if (u < t) b.own_lo = std::max(b.own_lo, o.hi + 1);
-        if (u > t) b.own_hi = std::min(b.own_hi, o.lo - 1);
-      }
-    }
-    buffers_built_ = s_.neighbours.builds;
   }
 
   // Per-thread sums of wall force and torque, zeroed every step and reduced in
@@ -506,36 +471,15 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
-  bool owned(int i) const {
-    for (const auto& b : buffers_)
-      if (i >= b.own_lo && i <= b.own_hi) return true;
-    return false;
-  }
-
-  // One pass over the particles once the pair forces are done: the sum of the
-  // per-thread buffers (`reduce`), the wall contacts, then the optional kick.
-  void finish_particles(bool reduce, const Kick* then_kick) {
+  // Particles [i0, i1) once their pair forces are complete: wall contacts,
+  // then the optional half kick and Kuen's rolling resistance.
+  void finish_particles(const Kick* then_kick, int i0, int i1) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
-    const int n = static_cast<int>(p.size());
     Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * acc_stride();
+    const bool kuen_on = kuen_.enabled();
     int64_t touching = 0;
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (reduce && !owned(i)) {
-        Vec f = zero_of<Vec>();
-        Rot t = Space<D>::rot_zero();
-        int c = 0;
-        for (const auto& b : buffers_) {
-          if (i < b.lo || i > b.hi) continue;
-          f += b.f[i];
-          t += b.t[i];
-          c += b.contacts[i];
-        }
-        p.f[i] = f;
-        p.t[i] = t;
-        p.contacts[i] = c;
-      }
+    for (int i = i0; i < i1; ++i) {
       p.wall_contacts[i] = 0;
       const int first = nl.wall_start[i], count = nl.wall_start[i + 1] - first;
       // Several candidate triangles: find them all first, so that a shared
@@ -599,7 +543,10 @@ class Stepper final : public StepperBase<D> {
         acc[2 * w] -= f3;
         acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
       }
-      if (then_kick) kick_one(p, i, *then_kick);
+      if (then_kick) {
+        kick_one(p, i, *then_kick);
+        if (kuen_on) kuen_.apply(p, i, s_.dt);
+      }
     }
 #pragma omp atomic
     wall_touching_ += touching;
@@ -613,11 +560,12 @@ class Stepper final : public StepperBase<D> {
   DemSystem<D>& s_;
   int n_materials_ = 0;
   std::vector<typename Model::Coeffs> coeffs_;
-  std::vector<ThreadBuffer> buffers_;
-  int buffers_built_ = -1;
+  ThreadPartition<D> partition_;
+  int64_t force_pass_ = 0;  // counts the force computations
   std::vector<Vec3> wall_acc_, pivots_;
   std::vector<char> moving_, active_;
   int64_t pair_touching_ = 0, wall_touching_ = 0;
+  bool step_open_ = false;    // a step's forces are done, its bookkeeping is not
   double max_moved_ = 0.0;    // squared, largest displacement since the last build
   std::exception_ptr error_;  // raised inside the parallel region, rethrown outside
   KuenRolling kuen_;
