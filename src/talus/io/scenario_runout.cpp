@@ -44,6 +44,8 @@ const EnumNames<EarthPressureMode> kPressureModes = {
     {"hungr", EarthPressureMode::Hungr},
     {"savage_hutter", EarthPressureMode::SavageHutter},
     {"constant", EarthPressureMode::Constant}};
+const EnumNames<runout::PressureForm> kPressureForms = {
+    {"gradient", runout::PressureForm::Gradient}, {"divergence", runout::PressureForm::Divergence}};
 
 void read_run(TomlReader& r, runout::RunoutScenario& s) {
   s.model = r.enumeration("model", kModels, RunoutModel::Dan);
@@ -121,7 +123,12 @@ void read_material(TomlReader& r, runout::DanParams& d) {
   r.finish();
 }
 
-void read_earth_pressure(TomlReader& r, runout::EarthPressure& e, bool grid) {
+void read_earth_pressure(TomlReader& r, runout::DanParams& d, bool grid) {
+  runout::EarthPressure& e = d.pressure;
+  if (grid)
+    r.reject({"form"}, "is not used by model 'fv2d' (its fluxes are the divergence form)");
+  else
+    d.pressure_form = r.enumeration("form", kPressureForms, d.pressure_form);
   e.mode = r.enumeration("model", kPressureModes,
                          grid ? EarthPressureMode::SavageHutter : EarthPressureMode::Hungr);
   if (grid) {
@@ -333,7 +340,7 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
   TomlReader material = root.required_table("material");
   read_material(material, s.params);
   TomlReader pressure = table_or_empty(root, "earth_pressure", empty);
-  read_earth_pressure(pressure, s.params.pressure, grid);
+  read_earth_pressure(pressure, s.params, grid);
   if (!grid) {
     TomlReader smoothing = table_or_empty(root, "smoothing", empty);
     read_smoothing(smoothing, s.params.smoothing);
@@ -392,6 +399,7 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
       pressure["initial"] = p.pressure.constant;
     }
   }
+  if (!grid) pressure["form"] = detail::name_of(kPressureForms, p.pressure_form);
   if (grid) {
     if (p.pressure.mode != EarthPressureMode::Constant)
       pressure = {{"model", detail::name_of(kPressureModes, p.pressure.mode)}};

@@ -33,6 +33,9 @@ DanModel::DanModel(RunoutPath path, DanParams params, DanBlocks blocks)
   }
   h_.resize(n - 1);
   H_.resize(n);
+  energy_min_ = total_energy();
+  kinetic_peak_ = kinetic_energy();
+  depth_energy_start_ = depth_energy();
 }
 
 double DanModel::width_between(std::size_t j) const {
@@ -72,6 +75,25 @@ double DanModel::pressure_gradient(std::size_t i, const std::vector<double>& h,
   return sum / sides;
 }
 
+// (1 / (rho g cos psi H)) dp/ds at boundary block i in the conservative form:
+// the pressure resultants P_j = k_j rho g cos h_j^2 / 2 of the blocks on either
+// side (none beyond the ends) over the node's volume per width
+// (h_{j-1} L_{j-1} + h_j L_j) / 2. For uniform k this is k dh/ds.
+double DanModel::pressure_divergence(std::size_t i, const std::vector<double>& h) const {
+  const std::size_t n = size();
+  const auto& s = b_.s;
+  double behind = 0.0, ahead = 0.0, volume = 0.0;
+  if (i > 0) {
+    behind = b_.k[i - 1] * h[i - 1] * h[i - 1];
+    volume += h[i - 1] * (s[i] - s[i - 1]);
+  }
+  if (i + 1 < n) {
+    ahead = b_.k[i] * h[i] * h[i];
+    volume += h[i] * (s[i + 1] - s[i]);
+  }
+  return (ahead - behind) / volume;
+}
+
 void DanModel::step(double dt) {
   const std::size_t n = size();
   const double g = p_.gravity;
@@ -87,7 +109,10 @@ void DanModel::step(double dt) {
     const double theta = path_.angle(s);
     const double cos_psi = std::cos(theta);
     // Downslope gravity minus the pressure gradient, per unit mass.
-    const double drive = -g * std::sin(theta) - g * cos_psi * pressure_gradient(i, h_, H_);
+    const double pressure = p_.pressure_form == PressureForm::Gradient
+                                ? pressure_gradient(i, h_, H_)
+                                : pressure_divergence(i, h_);
+    const double drive = -g * std::sin(theta) - g * cos_psi * pressure;
     // Basal normal stress with the centripetal acceleration of the curved
     // path; a block flying off a convex crest carries no friction.
     const double kappa = p_.centripetal ? path_.curvature(s) : 0.0;
@@ -119,6 +144,25 @@ void DanModel::step(double dt) {
   }
   b_.v.swap(v_new_);
   b_.time += dt;
+  check_energy();
+}
+
+void DanModel::check_energy() {
+  if (!(p_.energy_growth_tolerance > 0)) return;
+  const double e = total_energy();
+  kinetic_peak_ = std::max(kinetic_peak_, kinetic_energy());
+  energy_min_ = std::min(energy_min_, e);
+  const double scale = std::max(depth_energy_start_, kinetic_peak_);
+  // The round-off of the sum (heights measured from an arbitrary datum) is no
+  // growth.
+  if (e - energy_min_ > p_.energy_growth_tolerance * scale + 1e-12 * std::abs(e))
+    throw RunError(fmt::format(
+        "DAN: energy blow-up at t = {:.4g} s: the total energy rose by {:.4g} J above its "
+        "lowest value, more than {} of {:.4g} J (the larger of the initial depth "
+        "energy and the peak kinetic energy); the model only dissipates, so the scheme is unstable "
+        "(try the "
+        "'divergence' pressure form, the basal-angle modification or fewer blocks)",
+        b_.time, e - energy_min_, p_.energy_growth_tolerance, scale));
 }
 
 double DanModel::stable_time_step(double courant) const {
@@ -158,6 +202,22 @@ double DanModel::momentum() const {
 double DanModel::kinetic_energy() const {
   double e = 0.0;
   for (std::size_t i = 0; i < size(); ++i) e += 0.5 * mass_[i] * b_.v[i] * b_.v[i];
+  return e;
+}
+
+double DanModel::depth_energy() const {
+  double e = 0.0;
+  for (std::size_t j = 0; j + 1 < size(); ++j) {
+    const double cos_psi = std::cos(path_.angle(0.5 * (b_.s[j] + b_.s[j + 1])));
+    e += 0.5 * p_.density * p_.gravity * cos_psi * b_.volume[j] * block_depth(j);
+  }
+  return e;
+}
+
+double DanModel::total_energy() const {
+  double e = depth_energy();
+  for (std::size_t i = 0; i < size(); ++i)
+    e += mass_[i] * (0.5 * b_.v[i] * b_.v[i] + p_.gravity * path_.point(b_.s[i]).y());
   return e;
 }
 

@@ -20,6 +20,30 @@
 // velocity (symplectic Euler) has determinant 1 and is stable for w dt < 2.
 // Depths are measured normal to the path and block lengths along it (eq. 2.32
 // as printed); the release is cut into vertical slices (release.hpp).
+//
+// Pressure term: eq. 2.35 (the spec's form, default) writes k dH/ds as the
+// mean of one-sided slopes of H, each times its block's k. Where k jumps from
+// block to block (k_a next to k_p) that form is not the gradient of the blocks'
+// pressures: a block at k_p between two at k_a exerts no force on its
+// neighbours, and the pressure forces do work that no strain of the blocks
+// pays for. On the flume without the basal-angle modification (Savage-Hutter
+// switch, and Hungr's law as well) that work pumps energy into the deposit at
+// 200-400 blocks until it climbs over the barrier. PressureForm::Divergence is
+// the conservative form of the same term, the force on boundary block i being
+// the difference of its two blocks' pressure resultants
+// P_j = k_j rho g cos(psi) h_j^2 / 2 (what fv2d's fluxes are): its work is
+// sum_j P_j dL_j, so k_a while stretching and k_p while compressing only ever
+// dissipate. For uniform k both forms are k dh/ds to second order.
+//
+// Energy check: friction, smoothing and the k_a/k_p hysteresis only dissipate,
+// so the total energy (kinetic, of the boundary blocks' heights on the path, and
+// of the depth, sum rho g cos(psi) V_j h_j / 2) can only fall, up to the
+// discretisation error. A step after which it has risen above its lowest value
+// so far by more than energy_growth_tolerance times the larger of the initial
+// depth energy and the largest kinetic energy so far throws a RunError naming
+// the time. On the flume (docs/validation.md) healthy runs regrow by at most
+// 0.08 of that scale (the Hungr law stores and returns some energy in k; the
+// explicit step's energy error), the unstable ones by 1 to 2.
 #include <vector>
 
 #include "talus/runout/earth_pressure.hpp"
@@ -29,6 +53,11 @@
 
 namespace talus::runout {
 
+enum class PressureForm {
+  Gradient,   // Kuen eq. 2.35 (spec runout.md §1): k dH/ds from one-sided slopes
+  Divergence  // difference of the blocks' pressure resultants (conservative)
+};
+
 struct DanParams {
   double density = 1630.0;  // bulk, kg/m^3
   double gravity = 9.81;    // m/s^2, acting in -y
@@ -36,6 +65,9 @@ struct DanParams {
   EarthPressure pressure;
   SmoothingParams smoothing;
   bool centripetal = true;  // the v^2 kappa term in the basal normal stress
+  PressureForm pressure_form = PressureForm::Gradient;
+  // Largest allowed regrowth of the total energy (see above); <= 0: no check.
+  double energy_growth_tolerance = 0.25;
 };
 
 // The state: everything that changes in time, plus the constant volumes.
@@ -74,6 +106,9 @@ class DanModel {
   double deformed_volume() const;  // sum h_j B_j (S_{j+1} - S_j): equals sum V_j
   double momentum() const;         // sum m_i v_i along the path
   double kinetic_energy() const;
+  // Kinetic + boundary blocks' m g y on the path + depth energy (see above), J.
+  double total_energy() const;
+  double depth_energy() const;  // sum rho g cos(psi) V_j h_j / 2, J
   double max_speed() const;
   // Every block slower than kRestSpeed (held by friction).
   bool at_rest() const;
@@ -83,12 +118,15 @@ class DanModel {
   double width_between(std::size_t j) const;
   double pressure_gradient(std::size_t i, const std::vector<double>& h,
                            const std::vector<double>& H) const;
+  double pressure_divergence(std::size_t i, const std::vector<double>& h) const;
+  void check_energy();
 
   RunoutPath path_;
   DanParams p_;
   DanBlocks b_;
   std::vector<double> mass_;  // boundary blocks' lumped masses, rho (V_{i-1} + V_i) / 2
   std::vector<double> h_, H_, v_new_, x_, s_old_, scratch_;
+  double energy_min_ = 0.0, kinetic_peak_ = 0.0, depth_energy_start_ = 0.0;
 };
 
 }  // namespace talus::runout
