@@ -2,11 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "talus/core/error.hpp"
+#include "talus/dem/membrane/from_spec.hpp"
 #include "talus/dem/packing.hpp"
 
 namespace talus::dem {
@@ -168,6 +170,14 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
     s.walls.push_back(
         geometry::make_wall(w, material_of(sc, w.material, "[[walls]] '" + w.name + "'"), D));
 
+  if constexpr (D == 3) {
+    for (const auto& m : sc.membranes)
+      s.membranes.push_back(membrane::make_membrane_body(
+          m, material_of(sc, m.material, "[[membranes]] '" + m.name + "'")));
+  } else if (!sc.membranes.empty()) {
+    throw InputError("[[membranes]]: membranes need run.dimension = 3");
+  }
+
   int64_t id = 0;
   double r_max = 0.0, v_max = 0.0;
   for (const Placed& q : place_particles(sc, sc.run.seed)) {
@@ -217,6 +227,7 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
     for (auto& v : s.particles.v) v.setZero();
     for (auto& w : s.particles.w) w = Space<D>::rot_zero();
     for (auto& w : s.walls) w.impulse.setZero();
+    for (auto& m : s.membranes) std::fill(m.body.v.begin(), m.body.v.end(), Vec3::Zero());
   }
   return run;
 }

@@ -72,6 +72,13 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
             s.time, s.particles.id[i], s.dt, run.critical_time_step));
     throw RunError(fmt::format("t = {:.6g} s: kinetic energy is not finite", s.time));
   }
+  for (const auto& m : s.membranes)
+    for (std::size_t i = 0; i < m.body.v.size(); ++i)
+      if (!m.body.v[i].allFinite())
+        throw RunError(fmt::format(
+            "t = {:.6g} s: membrane '{}' particle {} has a non-finite velocity. Check the time "
+            "step (now {:.4g} s, critical {:.4g} s) and the membrane constants",
+            s.time, m.name, i, s.dt, run.critical_time_step));
   bool walls_move = false;
   for (const auto& w : s.walls) walls_move = walls_move || w.moves();
   if (factor > 0.0 && !walls_move && ke > factor * e_avail)

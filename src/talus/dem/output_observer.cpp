@@ -27,6 +27,11 @@ std::vector<std::string> series_columns(const DemSystem<D>& s) {
     for (int d = (D == 2 ? 2 : 0); d < 3; ++d) c.push_back(w.name + "_t" + axes[d]);
     for (int d = 0; d < D; ++d) c.push_back(w.name + "_impulse_" + axes[d]);
   }
+  for (const auto& m : s.membranes) {
+    c.push_back(m.name + "_kinetic_energy");
+    for (int d = 0; d < 3; ++d) c.push_back(m.name + "_reaction_" + axes[d]);
+    c.push_back(m.name + "_contacts");
+  }
   return c;
 }
 
@@ -52,6 +57,16 @@ Vec3 any_perpendicular(const Vec3& n) {
 }
 
 }  // namespace
+
+io::MeshFrame membrane_frame(const membrane::MembraneBody& m) {
+  io::MeshFrame f;
+  f.points = m.body.x;
+  f.triangles = m.body.mesh.triangles;
+  f.point_vectors["velocity"] = m.body.v;
+  f.point_scalars["fixed"].assign(m.body.fixed.begin(), m.body.fixed.end());
+  f.cell_scalars["tension"] = membrane::triangle_tension(m);
+  return f;
+}
 
 template <int D>
 io::WallFrame wall_frame(const DemSystem<D>& s, double extent) {
@@ -126,6 +141,10 @@ DemOutputs<D>::DemOutputs(std::filesystem::path dir, const DemSystem<D>& s, bool
     particles_->truncate_after(resume_time);
     walls_->truncate_after(resume_time);
   }
+  for (const auto& m : s.membranes) {
+    membranes_.push_back(std::make_unique<io::PvdSeries>(dir_, "membrane_" + m.name, resume));
+    if (resume) membranes_.back()->truncate_after(resume_time);
+  }
   peak_wall_force.assign(s.walls.size(), 0.0);
 }
 
@@ -151,6 +170,11 @@ void DemOutputs<D>::on_series(const DemRun<D>& run) {
     for (int d = (D == 2 ? 2 : 0); d < 3; ++d) row.push_back(wall.torque[d]);
     for (int d = 0; d < D; ++d) row.push_back(wall.impulse[d]);
     peak_wall_force[w] = std::max(peak_wall_force[w], wall.force.norm());
+  }
+  for (const auto& m : s.membranes) {
+    row.push_back(membrane::kinetic_energy(m));
+    for (int d = 0; d < 3; ++d) row.push_back(m.reaction[d]);
+    row.push_back(m.contacts);
   }
   if (ke > peak_kinetic_energy) {
     peak_kinetic_energy = ke;
@@ -180,6 +204,8 @@ void DemOutputs<D>::on_snapshot(const DemRun<D>& run) {
   double extent = 1.0;
   if (s.has_domain()) extent = (s.domain_max - s.domain_min).maxCoeff();
   walls_->add(s.time, wall_frame(s, extent));
+  for (std::size_t k = 0; k < s.membranes.size(); ++k)
+    membranes_[k]->add(s.time, membrane_frame(s.membranes[k]));
 }
 
 template <int D>

@@ -44,10 +44,15 @@ class DemOutputs final : public DemObserver<D> {
   std::filesystem::path dir_;
   std::unique_ptr<io::CsvSeries> series_;
   std::unique_ptr<io::PvdSeries> particles_, walls_;
+  std::vector<std::unique_ptr<io::PvdSeries>> membranes_;  // membrane_<name>.pvd each
 };
 
 // Wall geometry as drawable lines and triangles at time t (planes as squares of
 // side `extent` around their point, arcs and cylinders as polylines/strips).
+// A membrane's triangles at its current positions, with point data velocity
+// and fixed (1 pinned, 0 free) and cell data tension (triangle_tension, N).
+io::MeshFrame membrane_frame(const membrane::MembraneBody& m);
+
 template <int D>
 io::WallFrame wall_frame(const DemSystem<D>& system, double extent);
 

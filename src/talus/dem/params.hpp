@@ -183,6 +183,43 @@ struct DamBreakParams {
   double toe_thickness = 0.0;   // m; the toe is the last x this thick (0: 3 mean diameters)
 };
 
+// A membrane of DEM membrane particles on a triangle mesh (spec/membranes-and-jamming.md,
+// Götz 2024 ch. 3; dem/membrane/). 3D runs only.
+enum class MembraneMeshKind { FlatSheet, Cylinder, GeodesicSphere, GeodesicHemisphere, Stl };
+// Which membrane particles are pinned: none; every particle on a boundary edge
+// ("edge": a sheet's rim, a hemisphere's equator, an open cylinder's two end
+// rings); the boundary ring at the bottom or top of a cylinder (the cap's
+// outer ring of a capped one); both rings.
+enum class MembraneFixed { None, Edge, BottomRing, TopRing, BothRings };
+
+struct MembraneSpec {
+  std::string name;
+  MembraneMeshKind mesh = MembraneMeshKind::FlatSheet;
+  // flat_sheet: lower-left corner `origin`, size [lx, ly] in its plane z = origin.z.
+  // cylinder: axis along z through `origin` (the bottom centre), radius, height, caps.
+  // geodesic_sphere / geodesic_hemisphere: centre `origin`, radius, frequency.
+  // stl: file, scale, offset.
+  Vec3 origin = Vec3::Zero();
+  double size_x = 0.0, size_y = 0.0;
+  double radius = 0.0, height = 0.0;
+  bool caps = false;
+  double spacing = 0.0;  // m, target edge length (flat_sheet, cylinder)
+  int frequency = 0;     // geodesic meshes
+  std::string file;
+  double scale = 1.0;
+  Vec3 offset = Vec3::Zero();
+  // Material (Götz 2024 Table 2 names).
+  double youngs_modulus = 0.0;     // E_m, Pa
+  double thickness = 0.0;          // d, m
+  double density = 0.0;            // rho_m, kg/m^3
+  double spring_damping = 0.0;     // gamma_sp, -
+  double bending_stiffness = 0.0;  // k_el, N m
+  double bending_damping = 0.0;    // k_diss, N m s
+  double pressure = 0.0;           // p, Pa, force A p n per triangle (n outwards): < 0 squeezes
+  MembraneFixed fixed = MembraneFixed::None;
+  std::string material;  // [[materials]] entry for grain-membrane contacts
+};
+
 struct DemScenario {
   std::string name;
   std::string description;
@@ -191,6 +228,7 @@ struct DemScenario {
   std::vector<MaterialParams> materials;
   std::vector<WallParams> walls;
   std::vector<ParticleSourceParams> sources;
+  std::vector<MembraneSpec> membranes;
   OutputParams output;
   std::optional<FlumeParams> flume;
   std::optional<DamBreakParams> dam_break;

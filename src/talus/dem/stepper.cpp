@@ -14,6 +14,7 @@
 #include "talus/dem/force_target.hpp"
 #include "talus/dem/hertz_pairs.hpp"
 #include "talus/dem/kuen_rolling.hpp"
+#include "talus/dem/membrane/membrane_step.hpp"
 #include "talus/dem/thread_partition.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
 
@@ -44,6 +45,8 @@ class Stepper final : public StepperBase<D> {
     if constexpr (kHertzBlocks)
       for (const auto& c : coeffs_) coeffs_law_.push_back(c.law);
     kuen_ = KuenRolling(s.contact, s.gravity.norm());
+    if constexpr (D == 3)
+      if (!s.membranes.empty()) membranes_ = std::make_unique<membrane::MembraneStep>(s);
   }
 
   void prime() override {
@@ -52,7 +55,11 @@ class Stepper final : public StepperBase<D> {
 #pragma omp parallel num_threads(s_.threads)
     {
 #pragma omp single
-      prepare_step(omp_get_num_threads());
+      {
+        prepare_step(omp_get_num_threads());
+        if constexpr (D == 3)
+          if (membranes_) membranes_->compute_forces(s_);
+      }
       compute_forces(nullptr);
     }
     close_forces();
@@ -113,7 +120,10 @@ class Stepper final : public StepperBase<D> {
     // and oscillates sqrt(2D) times faster than on one contact; with PFC's
     // damping this is what limits stability (a damped 2D packing does not come
     // to rest at the single-contact estimate: test_verification_packing.cpp).
-    return best / std::sqrt(2.0 * D);
+    best /= std::sqrt(2.0 * D);
+    if constexpr (D == 3)
+      if (membranes_) best = std::min(best, membranes_->critical_time_step(s_, v_ref));
+    return best;
   }
 
  private:
@@ -153,6 +163,10 @@ class Stepper final : public StepperBase<D> {
       if (!error_) {
         prepare_step(omp_get_num_threads());
         step_open_ = true;
+        // Membranes (serial, dem/membrane/membrane_step.hpp): their whole step,
+        // and their contact forces on the grains, which finish_particles adds.
+        if constexpr (D == 3)
+          if (membranes_) membranes_->step(s_);
       }
     }
     if (error_) return;
@@ -543,6 +557,8 @@ class Stepper final : public StepperBase<D> {
         acc[2 * w] -= f3;
         acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
       }
+      if constexpr (D == 3)
+        if (membranes_) membranes_->add_to_grain(p, i);
       if (then_kick) {
         kick_one(p, i, *then_kick);
         if (kuen_on) kuen_.apply(p, i, s_.dt);
@@ -569,6 +585,7 @@ class Stepper final : public StepperBase<D> {
   double max_moved_ = 0.0;    // squared, largest displacement since the last build
   std::exception_ptr error_;  // raised inside the parallel region, rethrown outside
   KuenRolling kuen_;
+  std::unique_ptr<membrane::MembraneStep> membranes_;  // 3D runs with membranes only
 };
 
 template <int D, class Law>

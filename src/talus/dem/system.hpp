@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "talus/dem/membrane/body.hpp"
 #include "talus/dem/neighbour_list.hpp"
 #include "talus/dem/params.hpp"
 #include "talus/dem/particles.hpp"
@@ -20,6 +21,7 @@ struct DemSystem {
   std::vector<geometry::Wall> walls;
   std::vector<MaterialParams> materials;
   ContactParams contact;
+  std::vector<membrane::MembraneBody> membranes;  // 3D only
 
   Vec gravity = Vec::Zero();
   double dt = 0.0;

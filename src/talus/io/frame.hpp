@@ -29,4 +29,15 @@ struct WallFrame {
   std::vector<int> line_wall, triangle_wall;  // wall index of each cell
 };
 
+// A deforming triangle surface (a DEM membrane): per-point vectors (e.g.
+// velocity) and per-triangle scalars (e.g. tension), each as long as its points
+// or triangles.
+struct MeshFrame {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::map<std::string, std::vector<Vec3>> point_vectors;
+  std::map<std::string, std::vector<double>> point_scalars;
+  std::map<std::string, std::vector<double>> cell_scalars;
+};
+
 }  // namespace talus::io

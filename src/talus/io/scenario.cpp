@@ -25,8 +25,8 @@ using detail::required_number_in;
 
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}, {"compare", 3}};
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method", "name",      "description", "run",       "contact", "materials",
-    "flume",  "dam_break", "walls",       "particles", "output"};
+    "method", "name",      "description", "run",       "contact",   "materials",
+    "flume",  "dam_break", "walls",       "particles", "membranes", "output"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;
@@ -242,10 +242,29 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
               "missing: at least one [[particles]] table (or a [flume.release] or "
               "[dam_break.release]) is needed");
   for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
+  std::vector<TomlReader> membranes = root.tables("membranes");
+  for (std::size_t i = 0; i < membranes.size(); ++i) {
+    auto m = detail::read_membrane(membranes[i], i, ctx);
+    for (std::size_t j = 0; j < s.membranes.size(); ++j)
+      if (s.membranes[j].name == m.name)
+        membranes[i].fail("name", fmt::format("membrane name '{}' is used twice (first at line {})",
+                                              m.name, membranes[j].line()));
+    // Grain-membrane contacts are Hertzian (membrane/contact.hpp): the linear
+    // model's materials need not have a Young's modulus.
+    if (s.contact.model == dem::ContactModel::Linear)
+      membranes[i].fail("material",
+                        "grain-membrane contacts use the Hertz law: membranes need contact.model "
+                        "= \"hertz_mindlin\" or \"viscoelastic_hertz\"");
+    s.membranes.push_back(std::move(m));
+  }
   check_densities(s, material_readers);
 
   TomlReader output = table_or_empty(root, "output", empty);
   s.output = read_output(output);
+  if (!s.membranes.empty() && s.output.checkpoint_interval > 0.0)
+    output.fail(
+        "checkpoint_interval",
+        "checkpoints of runs with [[membranes]] are not implemented yet (leave it out or 0)");
   root.finish();
   return s;
 }

@@ -37,6 +37,18 @@ inline const EnumNames<dem::SourceKind> kSourceKinds = {
     {"random_fill", dem::SourceKind::RandomFill},
     {"grow", dem::SourceKind::Grow},
     {"file", dem::SourceKind::File}};
+inline const EnumNames<dem::MembraneMeshKind> kMembraneMeshes = {
+    {"flat_sheet", dem::MembraneMeshKind::FlatSheet},
+    {"cylinder", dem::MembraneMeshKind::Cylinder},
+    {"geodesic_sphere", dem::MembraneMeshKind::GeodesicSphere},
+    {"geodesic_hemisphere", dem::MembraneMeshKind::GeodesicHemisphere},
+    {"stl", dem::MembraneMeshKind::Stl}};
+inline const EnumNames<dem::MembraneFixed> kMembraneFixed = {
+    {"none", dem::MembraneFixed::None},
+    {"edge", dem::MembraneFixed::Edge},
+    {"bottom_ring", dem::MembraneFixed::BottomRing},
+    {"top_ring", dem::MembraneFixed::TopRing},
+    {"both_rings", dem::MembraneFixed::BothRings}};
 inline const std::vector<std::string> kJitterNames = {"none", "peer"};
 
 template <typename E>
@@ -94,6 +106,9 @@ std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers
 std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext& ctx);
 dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ctx);
 dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx);
+// [[membranes]] (3D only), and its table for the resolved scenario.
+dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemContext& ctx);
+nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m);
 // Pieces of [[particles]] that [flume.release] shares.
 // box_min/box_max of a source from its polygon.
 void set_polygon_bounds(dem::ParticleSourceParams& s);

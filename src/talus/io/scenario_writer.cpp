@@ -283,6 +283,11 @@ Json scenario_table(const dem::DemScenario& s) {
   if (s.dam_break) doc["dam_break"] = Writer::dam_break(*s.dam_break, s);
   if (!walls.empty()) doc["walls"] = std::move(walls);
   if (!sources.empty()) doc["particles"] = std::move(sources);
+  if (!s.membranes.empty()) {
+    Json membranes = Json::array();
+    for (const auto& m : s.membranes) membranes.push_back(detail::membrane_table(m));
+    doc["membranes"] = std::move(membranes);
+  }
   doc["output"] = Writer::output(s.output);
   return doc;
 }

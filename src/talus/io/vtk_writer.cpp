@@ -230,6 +230,41 @@ void PvdSeries::add(double time, const WallFrame& frame) {
   commit(time);
 }
 
+void PvdSeries::add(double time, const MeshFrame& frame) {
+  const std::size_t n = frame.points.size(), nt = frame.triangles.size();
+  std::vector<DataArray> point_data, cell_data;
+  for (const auto& [name, values] : frame.point_vectors) {
+    require_size(values.size(), n, name.c_str());
+    point_data.push_back({"Float64", name, 3, bytes_of(values)});
+  }
+  for (const auto& [name, values] : frame.point_scalars) {
+    require_size(values.size(), n, name.c_str());
+    point_data.push_back({"Float64", name, 1, bytes_of(values)});
+  }
+  for (const auto& [name, values] : frame.cell_scalars) {
+    require_size(values.size(), nt, name.c_str());
+    cell_data.push_back({"Float64", name, 1, bytes_of(values)});
+  }
+  std::vector<int64_t> connectivity, offsets;
+  connectivity.reserve(3 * nt);
+  for (const auto& tri : frame.triangles) {
+    for (int corner : tri) {
+      if (corner < 0 || static_cast<std::size_t>(corner) >= n) {
+        throw std::invalid_argument(fmt::format("VTK frame: mesh point {} of {}", corner, n));
+      }
+      connectivity.push_back(corner);
+    }
+    offsets.push_back(static_cast<int64_t>(connectivity.size()));
+  }
+  const std::vector<uint8_t> types(nt, kVtkTriangle);
+  write_vtu(next_file_path(), n, nt, point_data, cell_data,
+            {"Float64", "Points", 3, bytes_of(frame.points)},
+            {{"Int64", "connectivity", 1, bytes_of(connectivity)},
+             {"Int64", "offsets", 1, bytes_of(offsets)},
+             {"UInt8", "types", 1, bytes_of(types)}});
+  commit(time);
+}
+
 void PvdSeries::commit(double time) {
   entries_.push_back({time, next_file_path().filename().string()});
   ++next_index_;

@@ -32,6 +32,8 @@ class PvdSeries {
   void add(double time, const ParticleFrame& frame);
   // Walls become VTK_LINE and VTK_TRIANGLE cells with cell data "wall".
   void add(double time, const WallFrame& frame);
+  // A mesh becomes VTK_TRIANGLE cells with its point and cell data.
+  void add(double time, const MeshFrame& frame);
 
   // For resume: drops the frames later than `time` from the collection and
   // deletes their files; the next frame reuses the freed numbers.

@@ -1,0 +1,94 @@
+#include "talus/dem/membrane/from_spec.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/core/error.hpp"
+
+namespace talus::dem::membrane {
+namespace {
+
+Mesh generate(const MembraneSpec& s) {
+  switch (s.mesh) {
+    case MembraneMeshKind::FlatSheet: {
+      // Rows of nx vertices spacing apart, ny rows spacing sqrt(3)/2 apart:
+      // the largest lattice that fits in size_x x size_y.
+      const int nx = 1 + static_cast<int>(std::floor(s.size_x / s.spacing + 1e-9));
+      const int ny =
+          1 + static_cast<int>(std::floor(s.size_y / (s.spacing * std::sqrt(3.0) / 2) + 1e-9));
+      Mesh m = flat_sheet(nx, ny, s.spacing);
+      for (Vec3& v : m.vertices) v += s.origin;
+      return m;
+    }
+    case MembraneMeshKind::Cylinder: {
+      Mesh m = cylinder(s.radius, s.height, s.spacing, s.caps);
+      for (Vec3& v : m.vertices) v += s.origin;
+      return m;
+    }
+    case MembraneMeshKind::GeodesicSphere:
+      return geodesic_sphere(s.radius, s.frequency, s.origin);
+    case MembraneMeshKind::GeodesicHemisphere:
+      return geodesic_hemisphere(s.radius, s.frequency, s.origin);
+    case MembraneMeshKind::Stl:
+      return read_stl_mesh(s.file, s.scale, s.offset);
+  }
+  return {};
+}
+
+// The end rings of a cylinder: vertices on its mantle (at the radius) at its
+// lowest or highest z (caps have smaller radii except their outer ring).
+void fix_ring(const MembraneSpec& s, Membrane& m, bool top) {
+  const double tol = 1e-9 * std::max(s.radius, s.height);
+  const double z_end = s.origin.z() + (top ? s.height : 0.0);
+  for (std::size_t i = 0; i < m.x.size(); ++i) {
+    const Vec3 d = m.x[i] - s.origin;
+    const double r = std::hypot(d.x(), d.y());
+    if (std::abs(r - s.radius) < tol && std::abs(m.x[i].z() - z_end) < tol) m.fixed[i] = 1;
+  }
+}
+
+}  // namespace
+
+MembraneBody make_membrane_body(const MembraneSpec& s, int material) {
+  MembraneParams mp;
+  mp.youngs_modulus = s.youngs_modulus;
+  mp.thickness = s.thickness;
+  mp.density = s.density;
+  mp.spring_damping = s.spring_damping;
+  mp.bending_elastic = s.bending_stiffness;
+  mp.bending_dissipative = s.bending_damping;
+  mp.pressure = s.pressure;
+  MembraneBody b;
+  b.name = s.name;
+  b.material = material;
+  b.body = make_membrane(generate(s), mp);
+  auto& m = b.body;
+  switch (s.fixed) {
+    case MembraneFixed::None:
+      break;
+    case MembraneFixed::Edge:
+      for (const Edge& e : m.mesh.edges)
+        if (!e.interior()) m.fixed[e.a] = m.fixed[e.b] = 1;
+      break;
+    case MembraneFixed::BottomRing:
+      fix_ring(s, m, false);
+      break;
+    case MembraneFixed::TopRing:
+      fix_ring(s, m, true);
+      break;
+    case MembraneFixed::BothRings:
+      fix_ring(s, m, false);
+      fix_ring(s, m, true);
+      break;
+  }
+  if (s.fixed != MembraneFixed::None &&
+      std::none_of(m.fixed.begin(), m.fixed.end(), [](char f) { return f != 0; }))
+    throw InputError(fmt::format(
+        "[[membranes]] '{}': 'fixed' selects no membrane particle (a closed mesh has no edge)",
+        s.name));
+  return b;
+}
+
+}  // namespace talus::dem::membrane

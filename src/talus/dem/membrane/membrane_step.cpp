@@ -1,0 +1,140 @@
+#include "talus/dem/membrane/membrane_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/dem/contact/pair_coefficients.hpp"
+
+namespace talus::dem::membrane {
+
+double kinetic_energy(const MembraneBody& m) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < m.body.x.size(); ++i)
+    e += 0.5 * m.body.mass[i] * m.body.v[i].squaredNorm();
+  return e;
+}
+
+Vec3 momentum(const MembraneBody& m) {
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < m.body.x.size(); ++i) p += m.body.mass[i] * m.body.v[i];
+  return p;
+}
+
+std::vector<double> triangle_tension(const MembraneBody& m) {
+  const auto& b = m.body;
+  const double k = spring_constant(b.params.youngs_modulus, b.params.thickness);
+  std::vector<double> out(b.mesh.num_triangles(), 0.0);
+  for (std::size_t t = 0; t < out.size(); ++t) {
+    for (int e : b.mesh.triangle_edges[t]) {
+      const auto& edge = b.mesh.edges[e];
+      out[t] += k * ((b.x[edge.a] - b.x[edge.b]).norm() - b.rest.length[e]) / 3.0;
+    }
+  }
+  return out;
+}
+
+MembraneStep::MembraneStep(const DemSystem<3>& s) {
+  n_membranes_ = static_cast<int>(s.membranes.size());
+  const auto& mats = s.materials;
+  for (const auto& grain : mats)
+    for (const auto& m : s.membranes) {
+      const auto& wall = mats[m.material];
+      coeffs_.push_back(ViscoelasticHertz::make(s.contact, grain, wall,
+                                                pair_coefficients(s.contact, grain, wall)));
+    }
+  grids_.resize(s.membranes.size());
+}
+
+void MembraneStep::kick(DemSystem<3>& s, double h) const {
+  for (auto& mb : s.membranes) {
+    auto& m = mb.body;
+    for (std::size_t i = 0; i < m.x.size(); ++i)
+      if (!m.fixed[i]) m.v[i] += (h / m.mass[i]) * m.f[i] + h * s.gravity;
+  }
+}
+
+void MembraneStep::step(DemSystem<3>& s) {
+  const double dt = s.dt;
+  kick(s, 0.5 * dt);
+  for (auto& mb : s.membranes) {
+    auto& m = mb.body;
+    for (std::size_t i = 0; i < m.x.size(); ++i)
+      if (!m.fixed[i]) m.x[i] += dt * m.v[i];
+  }
+  compute_forces(s);
+  kick(s, 0.5 * dt);
+}
+
+void MembraneStep::compute_forces(DemSystem<3>& s) {
+  auto& p = s.particles;
+  const std::size_t n = p.size();
+  force_.assign(n, Vec3::Zero());
+  torque_.assign(n, Vec3::Zero());
+  contacts_.assign(n, 0);
+  double r_max = 0.0;
+  for (double r : p.r) r_max = std::max(r_max, r);
+  for (int k = 0; k < n_membranes_; ++k) {
+    auto& mb = s.membranes[k];
+    auto& m = mb.body;
+    std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
+    add_internal_forces(m);
+    mb.memory.begin_step();
+    mb.contacts = 0;
+    // The triangles' bounding box, grown by the largest grain radius: grains
+    // outside it cannot touch (most grains, most steps).
+    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+    for (const Vec3& x : m.x) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    lo.array() -= r_max;
+    hi.array() += r_max;
+    // Rebuilt every step: one pass over the triangles, cheaper than the
+    // internal forces, and never stale.
+    grids_[k].build(m.mesh, m.x, 2.0 * r_max);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3& c = p.x[i];
+      if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
+      grids_[k].query(c, p.r[i], candidates_);
+      if (candidates_.empty()) continue;
+      select_contacts(m.mesh, m.x, c, p.r[i], candidates_, selected_);
+      if (selected_.empty()) continue;
+      const Grain g{c, p.v[i], p.w[i], p.r[i], p.m[i]};
+      const GrainForce gf = grain_membrane_forces(m.mesh, m.x, m.v, m.f, p.id[i], g, selected_,
+                                                  coeffs(p.material[i], k), s.dt, mb.memory);
+      force_[i] += gf.force;
+      if (!s.contact.lock_rotation) torque_[i] += gf.torque;
+      contacts_[i] += gf.contacts;
+      mb.contacts += gf.contacts;
+    }
+    mb.reaction.setZero();
+    for (std::size_t i = 0; i < m.x.size(); ++i)
+      if (m.fixed[i]) mb.reaction -= m.f[i] + m.mass[i] * s.gravity;
+  }
+}
+
+double MembraneStep::critical_time_step(const DemSystem<3>& s, double v_ref) const {
+  const auto& p = s.particles;
+  const int nm = static_cast<int>(s.materials.size());
+  std::vector<double> m_min(nm, 1e300), r_min(nm, 1e300);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    m_min[p.material[i]] = std::min(m_min[p.material[i]], p.m[i]);
+    r_min[p.material[i]] = std::min(r_min[p.material[i]], p.r[i]);
+  }
+  double best = 1e300;
+  for (int k = 0; k < n_membranes_; ++k) {
+    const auto& m = s.membranes[k].body;
+    best = std::min(best, membrane::critical_time_step(m));
+    double mv = 1e300;
+    for (std::size_t i = 0; i < m.x.size(); ++i)
+      if (!m.fixed[i]) mv = std::min(mv, m.mass[i]);
+    if (mv >= 1e300) continue;
+    for (int a = 0; a < nm; ++a) {
+      if (m_min[a] >= 1e300) continue;
+      const double me = m_min[a] * mv / (m_min[a] + mv);
+      best =
+          std::min(best, ViscoelasticHertz::critical_time_step(coeffs(a, k), me, r_min[a], v_ref) /
+                             std::sqrt(6.0));
+    }
+  }
+  return best;
+}
+
+}  // namespace talus::dem::membrane

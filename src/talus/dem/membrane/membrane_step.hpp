@@ -1,0 +1,58 @@
+#pragma once
+// The membranes' part of a DEM step (3D): velocity Verlet of the membrane
+// particles, their internal and pressure forces, and the grain-membrane
+// contacts, whose forces on the grains are kept per grain until the stepper
+// adds them before the grains' second half kick. Everything here runs on one
+// thread (the kernels scatter to shared vertices); the stepper calls it inside
+// its serial section, after the grains have drifted.
+#include <vector>
+
+#include "talus/dem/contact/hertz_mindlin.hpp"
+#include "talus/dem/membrane/body.hpp"
+#include "talus/dem/system.hpp"
+
+namespace talus::dem::membrane {
+
+class MembraneStep {
+ public:
+  // Contact coefficients per (grain material, membrane) from the system's
+  // contact rules (ViscoelasticHertz, as Götz: walls and membranes alike).
+  explicit MembraneStep(const DemSystem<3>& s);
+
+  // Forces of the current state on membrane particles and grains; no motion.
+  void compute_forces(DemSystem<3>& s);
+  // One step of the membrane particles, called once the grains have drifted
+  // to t + dt (their velocities at t + dt/2): half kick with the old forces,
+  // drift, forces, half kick with the new ones. Fixed particles stay.
+  void step(DemSystem<3>& s);
+
+  // The membrane contact force and torque on grain i (and its contact count),
+  // to add before the grain's half kick.
+  void add_to_grain(Particles<3>& p, int i) const {
+    p.f[i] += force_[i];
+    p.t[i] += torque_[i];
+    p.wall_contacts[i] += contacts_[i];
+  }
+
+  // Stable step of the membranes: min over membranes of the internal bound
+  // (membrane::critical_time_step) and of the Hertz contact of the lightest
+  // grain of each material with the lightest free membrane particle at v_ref,
+  // divided by sqrt(6) as the grains' bound (several contacts at once).
+  double critical_time_step(const DemSystem<3>& s, double v_ref) const;
+
+ private:
+  void kick(DemSystem<3>& s, double h) const;
+  const ViscoelasticHertz::Coeffs& coeffs(int grain_material, int membrane) const {
+    return coeffs_[static_cast<std::size_t>(grain_material) * n_membranes_ + membrane];
+  }
+
+  int n_membranes_ = 0;
+  std::vector<ViscoelasticHertz::Coeffs> coeffs_;
+  std::vector<TriangleGrid> grids_;
+  std::vector<Vec3> force_, torque_;
+  std::vector<int> contacts_;
+  std::vector<int> candidates_;
+  std::vector<TriangleContact> selected_;
+};
+
+}  // namespace talus::dem::membrane

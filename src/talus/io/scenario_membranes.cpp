@@ -1,0 +1,146 @@
+// [[membranes]]: DEM membranes (spec/membranes-and-jamming.md): the mesh per
+// kind, the membrane material (Götz 2024 Table 2 names), pressure, pinned
+// particles and the contact material; and the writer's table for one.
+#include <fmt/format.h>
+
+#include "talus/io/scenario_detail.hpp"
+
+namespace talus::io::detail {
+namespace {
+
+using dem::MembraneFixed;
+using dem::MembraneMeshKind;
+
+// The keys each mesh kind reads, to say which kind a stray key belongs to.
+const std::vector<std::string_view> kMeshKeys = {"origin", "size",    "center", "radius",
+                                                 "height", "spacing", "caps",   "frequency",
+                                                 "file",   "scale",   "offset"};
+
+void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
+  switch (m.mesh) {
+    case MembraneMeshKind::FlatSheet: {
+      m.origin = required_point(r, "origin", ctx);
+      if (!r.has("size")) r.missing("size", "missing (expected [lx, ly] in m)");
+      const Vec3 size = r.required_vec3("size");
+      m.spacing = required_number_in(r, "spacing", positive());
+      r.expect(size.x() >= m.spacing && size.y() >= m.spacing && size.z() == 0.0, "size",
+               fmt::format("[lx, ly] with both sides at least the spacing ({} m)", m.spacing));
+      m.size_x = size.x();
+      m.size_y = size.y();
+      break;
+    }
+    case MembraneMeshKind::Cylinder:
+      m.origin = point_or(r, "center", ctx, Vec3::Zero());
+      m.radius = required_number_in(r, "radius", positive());
+      m.height = required_number_in(r, "height", positive());
+      m.spacing = required_number_in(r, "spacing", positive());
+      r.expect(m.spacing < m.radius, "spacing",
+               fmt::format("a spacing below the radius ({} m)", m.radius));
+      m.caps = r.boolean("caps", false);
+      break;
+    case MembraneMeshKind::GeodesicSphere:
+    case MembraneMeshKind::GeodesicHemisphere: {
+      const bool half = m.mesh == MembraneMeshKind::GeodesicHemisphere;
+      m.origin = point_or(r, "center", ctx, Vec3::Zero());
+      m.radius = required_number_in(r, "radius", positive());
+      const auto f = r.required_integer("frequency");
+      r.expect(f >= 1 && f <= 256 && (!half || f % 2 == 0), "frequency",
+               half ? "an even integer in [2, 256]" : "an integer in [1, 256]");
+      m.frequency = static_cast<int>(f);
+      break;
+    }
+    case MembraneMeshKind::Stl:
+      m.file = required_file(r, "file", ctx);
+      m.scale = number_in(r, "scale", 1.0, positive());
+      m.offset = point_or(r, "offset", ctx, Vec3::Zero());
+      break;
+  }
+}
+
+void check_fixed(TomlReader& r, const dem::MembraneSpec& m) {
+  const bool rings = m.fixed == MembraneFixed::BottomRing || m.fixed == MembraneFixed::TopRing ||
+                     m.fixed == MembraneFixed::BothRings;
+  if (rings && m.mesh != MembraneMeshKind::Cylinder)
+    r.fail("fixed", fmt::format("\"{}\" needs mesh = \"cylinder\"; other meshes use \"edge\" or "
+                                "\"none\"",
+                                name_of(kMembraneFixed, m.fixed)));
+  const bool closed = m.mesh == MembraneMeshKind::GeodesicSphere ||
+                      (m.mesh == MembraneMeshKind::Cylinder && m.caps);
+  if (m.fixed == MembraneFixed::Edge && closed)
+    r.fail("fixed",
+           "\"edge\": a closed membrane has no edge (use \"none\", or the rings of a "
+           "cylinder)");
+}
+
+}  // namespace
+
+dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemContext& ctx) {
+  dem::MembraneSpec m;
+  m.name = r.string("name", fmt::format("membrane{}", index));
+  r.expect(
+      !m.name.empty() && m.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMN"
+                                                  "OPQRSTUVWXYZ0123456789_-") == std::string::npos,
+      "name", "a non-empty name of letters, digits, '_' and '-'");
+  if (ctx.dimension != 3)
+    r.fail("mesh",
+           fmt::format("membranes need run.dimension = 3 (this run has {})", ctx.dimension));
+  m.mesh = r.required_enum("mesh", kMembraneMeshes);
+  read_mesh(r, m, ctx);
+  r.reject(kMeshKeys, fmt::format("not used by mesh = \"{}\"", name_of(kMembraneMeshes, m.mesh)));
+  m.youngs_modulus = required_number_in(r, "youngs_modulus", positive());
+  m.thickness = required_number_in(r, "thickness", positive());
+  m.density = required_number_in(r, "density", positive());
+  m.spring_damping = number_in(r, "spring_damping", 0.0, non_negative());
+  m.bending_stiffness = number_in(r, "bending_stiffness", 0.0, non_negative());
+  m.bending_damping = number_in(r, "bending_damping", 0.0, non_negative());
+  m.pressure = r.number("pressure", 0.0);
+  m.fixed = r.enumeration("fixed", kMembraneFixed, MembraneFixed::None);
+  check_fixed(r, m);
+  m.material = r.required_string("material");
+  check_material(r, "material", m.material, ctx);
+  r.finish();
+  return m;
+}
+
+nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
+  using Json = nlohmann::ordered_json;
+  auto vec = [](const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); };
+  Json t{{"name", m.name}, {"mesh", name_of(kMembraneMeshes, m.mesh)}};
+  switch (m.mesh) {
+    case MembraneMeshKind::FlatSheet:
+      t["origin"] = vec(m.origin);
+      t["size"] = Json::array({m.size_x, m.size_y});
+      t["spacing"] = m.spacing;
+      break;
+    case MembraneMeshKind::Cylinder:
+      t["center"] = vec(m.origin);
+      t["radius"] = m.radius;
+      t["height"] = m.height;
+      t["spacing"] = m.spacing;
+      t["caps"] = m.caps;
+      break;
+    case MembraneMeshKind::GeodesicSphere:
+    case MembraneMeshKind::GeodesicHemisphere:
+      t["center"] = vec(m.origin);
+      t["radius"] = m.radius;
+      t["frequency"] = m.frequency;
+      break;
+    case MembraneMeshKind::Stl:
+      t["file"] = m.file;
+      t["scale"] = m.scale;
+      t["offset"] = vec(m.offset);
+      break;
+  }
+  t["youngs_modulus"] = m.youngs_modulus;
+  t["thickness"] = m.thickness;
+  t["density"] = m.density;
+  t["spring_damping"] = m.spring_damping;
+  t["bending_stiffness"] = m.bending_stiffness;
+  t["bending_damping"] = m.bending_damping;
+  t["pressure"] = m.pressure;
+  t["fixed"] = name_of(kMembraneFixed, m.fixed);
+  t["material"] = m.material;
+  return t;
+}
+
+}  // namespace talus::io::detail
