@@ -162,13 +162,15 @@ int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::si
   // which only a touching pair keeps. Its shear moves into the block and the
   // list's entry is zeroed (a pair that does not touch has no history); the
   // block writes the new shear back.
+  // The count of the block lives in a register (`l`): b.n shares its type
+  // with b.i and b.j, so the compiler would reload it after their stores.
   int64_t touching = 0;
+  int l = 0;
   for (std::size_t k = k0; k < k1; ++k) {
     const int i = pairs[k].i, j = pairs[k].j;
     const Vec2 d = p.x[i] - p.x[j];
     const double d2 = d.squaredNorm();
     const double rs = p.r[i] + p.r[j];
-    const int l = b.n;
     b.i[l] = i;
     b.j[l] = j;
     b.k[l] = k;
@@ -181,10 +183,15 @@ int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::si
     b.sy[l] = shear[k].y();
     shear[k] = zero_of<Vec2>();
     const int touches = d2 >= rs * rs ? 0 : 1;  // as the scalar path (NaN counts as touching)
-    b.n += touches;
+    l += touches;
     touching += touches;
-    if (b.n == kBlock) flush(b, in, fn, out);
+    if (l == kBlock) {
+      b.n = l;
+      flush(b, in, fn, out);
+      l = 0;
+    }
   }
+  b.n = l;
   if (b.n > 0) flush(b, in, fn, out);
   return touching;
 }
