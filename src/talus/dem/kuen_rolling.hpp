@@ -34,7 +34,7 @@ class KuenRolling {
 
   // Particle i at the end of a step, after its second half kick.
   template <int D>
-  void apply(Particles<D>& p, std::size_t i, double dt) const {
+  TALUS_HOT void apply(Particles<D>& p, std::size_t i, double dt) const {
     if (p.wall_contacts[i] > 0) {
       const double dw = kuen_wall_deceleration(g_, p.r[i], u_rr_) * dt;
       const double w = Space<D>::rot_norm(p.w[i]);

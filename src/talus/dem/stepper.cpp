@@ -14,6 +14,7 @@
 #include "talus/dem/force_target.hpp"
 #include "talus/dem/hertz_pairs.hpp"
 #include "talus/dem/kuen_rolling.hpp"
+#include "talus/dem/linear_pairs.hpp"
 #include "talus/dem/membrane/membrane_step.hpp"
 #include "talus/dem/thread_partition.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
@@ -42,7 +43,7 @@ class Stepper final : public StepperBase<D> {
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b)
         coeffs_[a * m + b] = Model::make(s.contact, s.materials[a], s.materials[b]);
-    if constexpr (kHertzBlocks)
+    if constexpr (kHertzBlocks || kLinearBlocks)
       for (const auto& c : coeffs_) coeffs_law_.push_back(c.law);
     kuen_ = KuenRolling(s.contact, s.gravity.norm());
     if constexpr (D == 3)
@@ -442,6 +443,11 @@ class Stepper final : public StepperBase<D> {
                                s_.dt};
       return hertz_scatter_pairs(in, k0, k1, out);
     }
+    if constexpr (kLinearBlocks) {
+      const LinearPairsInput in{&s_.particles, &s_.neighbours, coeffs_law_.data(), n_materials_,
+                                s_.dt};
+      return linear_scatter_pairs(in, k0, k1, out);
+    }
     const auto& pairs = s_.neighbours.pairs;
     int64_t touching = 0;
     PairResult<D> r;
@@ -568,10 +574,13 @@ class Stepper final : public StepperBase<D> {
     wall_touching_ += touching;
   }
 
-  // The peer benchmark's law in 3D runs its pair loop in vectorised blocks.
+  // The peer benchmark's law in 3D and the flume's in 2D run their pair loop
+  // in vectorised blocks.
   static constexpr bool kHertzBlocks =
       D == 3 && std::is_same_v<Model, ComposedContact<HertzMindlin, NoRolling>>;
-  std::vector<HertzMindlin::Coeffs> coeffs_law_;  // the law's part of coeffs_ (block path)
+  static constexpr bool kLinearBlocks =
+      D == 2 && std::is_same_v<Model, ComposedContact<LinearSpringDashpot, NoRolling>>;
+  std::vector<decltype(Model::Coeffs::law)> coeffs_law_;  // the law's part of coeffs_ (blocks)
 
   DemSystem<D>& s_;
   int n_materials_ = 0;

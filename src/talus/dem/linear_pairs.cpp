@@ -1,0 +1,199 @@
+#include "talus/dem/linear_pairs.hpp"
+
+#include <cmath>
+
+namespace talus::dem {
+
+namespace {
+
+// Touching pairs per block: a multiple of the widest vector (8 doubles), small
+// enough that the block stays in L1.
+constexpr int kBlock = 32;
+
+using Vec2 = Space<2>::Vec;
+
+// Structure of arrays of one block: inputs gathered from the particles and the
+// pair list, results scattered back. Coefficients are per lane, as the
+// material pair may change from pair to pair.
+struct alignas(64) Block {
+  double dx[kBlock], dy[kBlock], d2[kBlock];  // x_i - x_j
+  double ri[kBlock], rj[kBlock], mi[kBlock], mj[kBlock];
+  double vx[kBlock], vy[kBlock], wi[kBlock], wj[kBlock];  // v_i - v_j; omega_i, omega_j
+  double sx[kBlock], sy[kBlock];                          // shear force: in, then out
+  double kn[kBlock], ks[kBlock], beta[kBlock], mu[kBlock];
+  double no_pull[kBlock];  // 1 where the dashpot may not pull (!may_pull)
+  double fx[kBlock], fy[kBlock], ti[kBlock], tj[kBlock];  // force on i; torques
+  int i[kBlock], j[kBlock];
+  std::size_t k[kBlock];
+  int n = 0;
+};
+
+// pair_force + LinearSpringDashpot::compute of stepper.cpp in 2D, lane by
+// lane; the comments name the scalar expressions each line reproduces.
+TALUS_HOT void block_body(Block& b, double dt) {
+  const int n = b.n;
+#pragma omp simd
+  for (int l = 0; l < n; ++l) {
+    const double dist = std::sqrt(b.d2[l]);
+    const double inv = 1.0 / dist;
+    const double nx = b.dx[l] * inv, ny = b.dy[l] * inv;
+    const double overlap = (b.ri[l] + b.rj[l]) - dist;
+    const double ci = b.ri[l] - 0.5 * overlap, cj = b.rj[l] - 0.5 * overlap;
+    const double m_eff = b.mi[l] * b.mj[l] / (b.mi[l] + b.mj[l]);
+    // vn = vrel.n; vt = vrel - vn n - cross(ci w_i + cj w_j, n), with
+    // Space<2>::cross(w, n) = (-w n_y, w n_x)
+    const double vn = b.vx[l] * nx + b.vy[l] * ny;
+    const double warm = ci * b.wi[l] + cj * b.wj[l];
+    const double vtx = (b.vx[l] - vn * nx) - (-warm * ny);
+    const double vty = (b.vy[l] - vn * ny) - warm * nx;
+    // LinearSpringDashpot::compute: 2.0 * beta * sqrt(...) is (2.0 * beta) * sqrt(...)
+    const double two_beta = 2.0 * b.beta[l];
+    const double cn = two_beta * std::sqrt(m_eff * b.kn[l]);
+    double fn = b.kn[l] * overlap - cn * vn;
+    fn = (b.no_pull[l] != 0.0 && fn < 0.0) ? 0.0 : fn;  // std::max(fn, 0.0)
+    // rotate_into_plane: s - (s.n) n, rescaled to the old length (unless 0)
+    double sx = b.sx[l], sy = b.sy[l];
+    const double len2 = sx * sx + sy * sy;
+    const double sn = sx * nx + sy * ny;
+    const double px = sx - sn * nx, py = sy - sn * ny;
+    const double p2 = px * px + py * py;
+    const double keep = std::sqrt(len2 / p2);  // used only where p2 > 0
+    const bool rotate = len2 != 0.0;
+    const bool rescale = p2 > 0.0;
+    sx = rotate ? (rescale ? px * keep : px) : sx;
+    sy = rotate ? (rescale ? py * keep : py) : sy;
+    // shear -= (ks dt) vt, capped by Coulomb
+    const double ks_dt = b.ks[l] * dt;
+    sx = sx - ks_dt * vtx;
+    sy = sy - ks_dt * vty;
+    const double cap = b.mu[l] * std::abs(fn);
+    const double s2 = sx * sx + sy * sy;
+    const bool sliding = s2 > cap * cap;
+    const double scale = cap / std::sqrt(s2);  // used only while sliding
+    sx = sliding ? sx * scale : sx;
+    sy = sliding ? sy * scale : sy;
+    const double ct = two_beta * std::sqrt(m_eff * b.ks[l]);
+    const double ftx = sliding ? sx : sx - ct * vtx;
+    const double fty = sliding ? sy : sy - ct * vty;
+    b.sx[l] = sx;
+    b.sy[l] = sy;
+    // f = fn n + ft; tq = -cross(n, ft); ti = ci tq + roll (0), tj = cj tq - roll
+    b.fx[l] = fn * nx + ftx;
+    b.fy[l] = fn * ny + fty;
+    const double tq = -(nx * fty - ny * ftx);
+    b.ti[l] = ci * tq + 0.0;  // + 0.0 as the scalar path: turns -0 into +0
+    b.tj[l] = cj * tq - 0.0;
+  }
+}
+
+// The same loop compiled for three instruction sets. None of them has FMA
+// enabled (and the build sets -ffp-contract=off), so all give the same bits.
+__attribute__((target("avx512f"))) void block_avx512(Block& b, double dt) { block_body(b, dt); }
+__attribute__((target("avx2"))) void block_avx2(Block& b, double dt) { block_body(b, dt); }
+void block_sse2(Block& b, double dt) { block_body(b, dt); }
+
+using BlockFn = void (*)(Block&, double);
+struct Isa {
+  BlockFn fn;
+  const char* name;
+};
+Isa pick_isa() {
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f")) return {block_avx512, "avx512f"};
+  if (__builtin_cpu_supports("avx2")) return {block_avx2, "avx2"};
+  return {block_sse2, "sse2"};
+}
+const Isa& isa() {
+  static const Isa chosen = pick_isa();
+  return chosen;
+}
+
+void set_coeffs(Block& b, int l, const LinearSpringDashpot::Coeffs& c) {
+  b.kn[l] = c.kn;
+  b.ks[l] = c.ks;
+  b.beta[l] = c.beta;
+  b.mu[l] = c.mu;
+  b.no_pull[l] = c.may_pull ? 0.0 : 1.0;
+}
+
+// Gathers the rest of the block's state, computes it and adds the results to
+// the particles in pair order.
+void flush(Block& b, const LinearPairsInput& in, BlockFn fn, const ForceTarget<2>& out) {
+  const auto& p = *in.particles;
+  for (int l = 0; l < b.n; ++l) {
+    const int i = b.i[l], j = b.j[l];
+    b.mi[l] = p.m[i];
+    b.mj[l] = p.m[j];
+    const Vec2 vrel = p.v[i] - p.v[j];
+    b.vx[l] = vrel.x();
+    b.vy[l] = vrel.y();
+    b.wi[l] = p.w[i];
+    b.wj[l] = p.w[j];
+  }
+  if (in.n_materials > 1)
+    for (int l = 0; l < b.n; ++l)
+      set_coeffs(b, l, in.coeffs[p.material[b.i[l]] * in.n_materials + p.material[b.j[l]]]);
+  fn(b, in.dt);
+  auto& shear = in.neighbours->pair_shear;
+  for (int l = 0; l < b.n; ++l) {
+    out.add(b.i[l], b.j[l], Vec2(b.fx[l], b.fy[l]), b.ti[l], b.tj[l]);
+    shear[b.k[l]] = Vec2(b.sx[l], b.sy[l]);
+  }
+  b.n = 0;
+}
+
+}  // namespace
+
+const char* linear_pairs_isa() { return isa().name; }
+
+int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::size_t k1,
+                             const ForceTarget<2>& out) {
+  const auto& p = *in.particles;
+  auto& nl = *in.neighbours;
+  const auto& pairs = nl.pairs;
+  auto& shear = nl.pair_shear;
+  const BlockFn fn = isa().fn;
+  thread_local Block b;
+  b.n = 0;
+  if (in.n_materials == 1)
+    for (int l = 0; l < kBlock; ++l) set_coeffs(b, l, in.coeffs[0]);
+  // Whether a pair touches is close to random from one pair to the next, so
+  // the filter has no branch: every pair is written into the next free slot,
+  // which only a touching pair keeps. Its shear moves into the block and the
+  // list's entry is zeroed (a pair that does not touch has no history); the
+  // block writes the new shear back.
+  // The count of the block lives in a register (`l`): b.n shares its type
+  // with b.i and b.j, so the compiler would reload it after their stores.
+  int64_t touching = 0;
+  int l = 0;
+  for (std::size_t k = k0; k < k1; ++k) {
+    const int i = pairs[k].i, j = pairs[k].j;
+    const Vec2 d = p.x[i] - p.x[j];
+    const double d2 = d.squaredNorm();
+    const double rs = p.r[i] + p.r[j];
+    b.i[l] = i;
+    b.j[l] = j;
+    b.k[l] = k;
+    b.dx[l] = d.x();
+    b.dy[l] = d.y();
+    b.d2[l] = d2;
+    b.ri[l] = p.r[i];
+    b.rj[l] = p.r[j];
+    b.sx[l] = shear[k].x();
+    b.sy[l] = shear[k].y();
+    shear[k] = zero_of<Vec2>();
+    const int touches = d2 >= rs * rs ? 0 : 1;  // as the scalar path (NaN counts as touching)
+    l += touches;
+    touching += touches;
+    if (l == kBlock) {
+      b.n = l;
+      flush(b, in, fn, out);
+      l = 0;
+    }
+  }
+  b.n = l;
+  if (b.n > 0) flush(b, in, fn, out);
+  return touching;
+}
+
+}  // namespace talus::dem
