@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "talus/dem/pair_blocks.hpp"
+
 namespace talus::dem {
 
 namespace {
 
-// Touching pairs per block: a multiple of the widest vector (8 doubles), small
-// enough that the block stays in L1.
-constexpr int kBlock = 32;
+using pair_blocks::kBlock;
 
 // Structure of arrays of one block: inputs gathered from the particles and the
 // pair list, results scattered back. Coefficients are per lane, as the
@@ -89,27 +89,8 @@ TALUS_HOT void block_body(Block& b, double dt) {
   }
 }
 
-// The same loop compiled for three instruction sets. None of them has FMA
-// enabled (and the build sets -ffp-contract=off), so all give the same bits.
-__attribute__((target("avx512f"))) void block_avx512(Block& b, double dt) { block_body(b, dt); }
-__attribute__((target("avx2"))) void block_avx2(Block& b, double dt) { block_body(b, dt); }
-void block_sse2(Block& b, double dt) { block_body(b, dt); }
-
-using BlockFn = void (*)(Block&, double);
-struct Isa {
-  BlockFn fn;
-  const char* name;
-};
-Isa pick_isa() {
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f")) return {block_avx512, "avx512f"};
-  if (__builtin_cpu_supports("avx2")) return {block_avx2, "avx2"};
-  return {block_sse2, "sse2"};
-}
-const Isa& isa() {
-  static const Isa chosen = pick_isa();
-  return chosen;
-}
+using Kernel = pair_blocks::Kernel<Block, block_body>;
+using BlockFn = Kernel::Fn;
 
 // Gathers the rest of the block's state, computes it and adds the results to
 // the particles in pair order.
@@ -152,7 +133,7 @@ void flush(Block& b, const HertzPairsInput& in, BlockFn fn, const ForceTarget<3>
 
 }  // namespace
 
-const char* hertz_pairs_isa() { return isa().name; }
+const char* hertz_pairs_isa() { return Kernel::chosen().name; }
 
 int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size_t k1,
                             const ForceTarget<3>& out) {
@@ -160,7 +141,7 @@ int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size
   auto& nl = *in.neighbours;
   const auto& pairs = nl.pairs;
   auto& shear = nl.pair_shear;
-  const BlockFn fn = isa().fn;
+  const BlockFn fn = Kernel::chosen().fn;
   thread_local Block b;
   b.n = 0;
   const bool one_material = in.n_materials == 1;

@@ -8,22 +8,14 @@
 // stepper.cpp with HertzMindlin::compute) in the same order, and the build
 // disables FMA contraction, so both paths give the same bits.
 #include <cstdint>
-#include <vector>
 
 #include "talus/dem/contact/hertz_mindlin.hpp"
 #include "talus/dem/force_target.hpp"
-#include "talus/dem/neighbour_list.hpp"
-#include "talus/dem/particles.hpp"
+#include "talus/dem/pair_blocks.hpp"
 
 namespace talus::dem {
 
-struct HertzPairsInput {
-  const Particles<3>* particles;
-  NeighbourList<3>* neighbours;
-  const HertzMindlin::Coeffs* coeffs;  // n_materials x n_materials, row major
-  int n_materials;
-  double dt;
-};
+using HertzPairsInput = PairBlockInput<3, HertzMindlin::Coeffs>;
 
 // Forces of pairs [k0, k1) added into `out` (pair order); returns the number
 // of touching pairs. The shear history of each pair is updated, and reset

@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "talus/dem/pair_blocks.hpp"
+
 namespace talus::dem {
 
 namespace {
 
-// Touching pairs per block: a multiple of the widest vector (8 doubles), small
-// enough that the block stays in L1.
-constexpr int kBlock = 32;
+using pair_blocks::kBlock;
 
 using Vec2 = Space<2>::Vec;
 
@@ -86,27 +86,8 @@ TALUS_HOT void block_body(Block& b, double dt) {
   }
 }
 
-// The same loop compiled for three instruction sets. None of them has FMA
-// enabled (and the build sets -ffp-contract=off), so all give the same bits.
-__attribute__((target("avx512f"))) void block_avx512(Block& b, double dt) { block_body(b, dt); }
-__attribute__((target("avx2"))) void block_avx2(Block& b, double dt) { block_body(b, dt); }
-void block_sse2(Block& b, double dt) { block_body(b, dt); }
-
-using BlockFn = void (*)(Block&, double);
-struct Isa {
-  BlockFn fn;
-  const char* name;
-};
-Isa pick_isa() {
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f")) return {block_avx512, "avx512f"};
-  if (__builtin_cpu_supports("avx2")) return {block_avx2, "avx2"};
-  return {block_sse2, "sse2"};
-}
-const Isa& isa() {
-  static const Isa chosen = pick_isa();
-  return chosen;
-}
+using Kernel = pair_blocks::Kernel<Block, block_body>;
+using BlockFn = Kernel::Fn;
 
 void set_coeffs(Block& b, int l, const LinearSpringDashpot::Coeffs& c) {
   b.kn[l] = c.kn;
@@ -144,7 +125,7 @@ void flush(Block& b, const LinearPairsInput& in, BlockFn fn, const ForceTarget<2
 
 }  // namespace
 
-const char* linear_pairs_isa() { return isa().name; }
+const char* linear_pairs_isa() { return Kernel::chosen().name; }
 
 int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::size_t k1,
                              const ForceTarget<2>& out) {
@@ -152,7 +133,7 @@ int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::si
   auto& nl = *in.neighbours;
   const auto& pairs = nl.pairs;
   auto& shear = nl.pair_shear;
-  const BlockFn fn = isa().fn;
+  const BlockFn fn = Kernel::chosen().fn;
   thread_local Block b;
   b.n = 0;
   if (in.n_materials == 1)

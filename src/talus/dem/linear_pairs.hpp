@@ -9,22 +9,14 @@
 // (pair_force in stepper.cpp with LinearSpringDashpot::compute) in the same
 // order, and the build disables FMA contraction, so both give the same bits.
 #include <cstdint>
-#include <vector>
 
 #include "talus/dem/contact/linear.hpp"
 #include "talus/dem/force_target.hpp"
-#include "talus/dem/neighbour_list.hpp"
-#include "talus/dem/particles.hpp"
+#include "talus/dem/pair_blocks.hpp"
 
 namespace talus::dem {
 
-struct LinearPairsInput {
-  const Particles<2>* particles;
-  NeighbourList<2>* neighbours;
-  const LinearSpringDashpot::Coeffs* coeffs;  // n_materials x n_materials, row major
-  int n_materials;
-  double dt;
-};
+using LinearPairsInput = PairBlockInput<2, LinearSpringDashpot::Coeffs>;
 
 // Forces of pairs [k0, k1) added into `out` (pair order); returns the number
 // of touching pairs. The shear force of each pair is updated, and reset where

@@ -403,20 +403,10 @@ class Stepper final : public StepperBase<D> {
     } else {
       // Each thread scatters its share of the pairs: forces on particles no
       // other thread's pairs touch straight into the particle arrays, the
-      // others into its buffer (zeroed here over the range its pairs touch).
+      // others into its buffer.
       const int tid = omp_get_thread_num();
       auto& buf = partition_.share(tid);
-      for (int i = buf.lo; i <= buf.hi; ++i) {
-        if (i >= buf.own_lo && i <= buf.own_hi) {
-          p.f[i] = zero_of<Vec>();
-          p.t[i] = Space<D>::rot_zero();
-          p.contacts[i] = 0;
-        } else {
-          buf.f[i] = zero_of<Vec>();
-          buf.t[i] = Space<D>::rot_zero();
-          buf.contacts[i] = 0;
-        }
-      }
+      partition_.clear(tid, p);
       const ForceTarget<D> out{p.f.data(),   p.t.data(),          p.contacts.data(), buf.f.data(),
                                buf.t.data(), buf.contacts.data(), buf.own_lo,        buf.own_hi};
       touching = scatter_pairs(buf.k0, buf.k1, out);
@@ -491,6 +481,36 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
+  // The closest points of particle i on its candidate wall primitives
+  // (wall_prim[first, first + count)) and whether each touches. With several
+  // candidates in 3D a shared edge or vertex of a mesh counts once
+  // (geometry/mesh_contacts.hpp). Per-thread scratch arrays: no allocation
+  // once they have grown.
+  std::pair<const geometry::Closest<D>*, const char*> wall_hits(int i, int first, int count) {
+    const auto& p = s_.particles;
+    const auto& nl = s_.neighbours;
+    thread_local std::vector<geometry::Closest<D>> near;
+    thread_local std::vector<char> hit;
+    thread_local std::vector<const geometry::Primitive*> prims;
+    thread_local std::vector<int> walls;
+    near.resize(count);
+    hit.resize(count);
+    prims.resize(count);
+    walls.resize(count);
+    for (int j = 0; j < count; ++j) {
+      const int prim = nl.wall_prim[first + j];
+      prims[j] = &s_.primitives[prim];
+      walls[j] = s_.primitive_wall[prim];
+      hit[j] = active_[walls[j]] &&
+               geometry::closest_point<D>(*prims[j], p.x[i], p.r[i], near[j]) &&
+               near[j].distance < p.r[i];
+    }
+    if (D == 3 && count > 1)
+      geometry::drop_shared_features<D>(prims.data(), walls.data(), near.data(), hit.data(), count,
+                                        p.r[i]);
+    return {near.data(), hit.data()};
+  }
+
   // Particles [i0, i1) once their pair forces are complete: wall contacts,
   // then the optional half kick and Kuen's rolling resistance.
   void finish_particles(const Kick* then_kick, int i0, int i1) {
@@ -502,39 +522,12 @@ class Stepper final : public StepperBase<D> {
     for (int i = i0; i < i1; ++i) {
       p.wall_contacts[i] = 0;
       const int first = nl.wall_start[i], count = nl.wall_start[i + 1] - first;
-      // Several candidate triangles: find them all first, so that a shared
-      // edge or vertex of a mesh counts once (geometry/mesh_contacts.hpp).
-      const bool dedupe = D == 3 && count > 1;
-      thread_local std::vector<geometry::Closest<D>> near;
-      thread_local std::vector<char> hit;
-      if (dedupe) {
-        thread_local std::vector<const geometry::Primitive*> prims;
-        thread_local std::vector<int> walls;
-        near.resize(count);
-        hit.resize(count);
-        prims.resize(count);
-        walls.resize(count);
-        for (int j = 0; j < count; ++j) {
-          const int prim = nl.wall_prim[first + j];
-          prims[j] = &s_.primitives[prim];
-          walls[j] = s_.primitive_wall[prim];
-          hit[j] = active_[walls[j]] &&
-                   geometry::closest_point<D>(*prims[j], p.x[i], p.r[i], near[j]) &&
-                   near[j].distance < p.r[i];
-        }
-        geometry::drop_shared_features<D>(prims.data(), walls.data(), near.data(), hit.data(),
-                                          count, p.r[i]);
-      }
+      const auto [near, hit] = wall_hits(i, first, count);
       for (int k = first; k < first + count; ++k) {
         const int prim = nl.wall_prim[k];
         const int w = s_.primitive_wall[prim];
-        geometry::Closest<D> c;
-        const bool touches =
-            dedupe ? (c = near[k - first], hit[k - first] != 0)
-                   : active_[w] &&
-                         geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) &&
-                         c.distance < p.r[i];
-        if (!touches) {
+        const geometry::Closest<D>& c = near[k - first];
+        if (!hit[k - first]) {
           nl.wall_history[k] = ContactHistory<D>{};
           continue;
         }

@@ -96,6 +96,18 @@ class ThreadPartition {
             static_cast<int>(static_cast<int64_t>(n) * (t + 1) / nt)};
   }
 
+  // Zeroes what thread `t` scatters into, over the particles its pairs touch:
+  // its own particles' sums in `p`, the rest in its buffer.
+  void clear(int t, Particles<D>& p) {
+    auto& s = shares_[t];
+    for (int i = s.lo; i <= s.hi; ++i) {
+      const bool own = i >= s.own_lo && i <= s.own_hi;
+      (own ? p.f : s.f)[i] = zero_of<Vec>();
+      (own ? p.t : s.t)[i] = Space<D>::rot_zero();
+      (own ? p.contacts : s.contacts)[i] = 0;
+    }
+  }
+
   bool owned(int i) const {
     for (const auto& s : shares_)
       if (i >= s.own_lo && i <= s.own_hi) return true;
