@@ -32,19 +32,22 @@ int contacts(const std::vector<Primitive>& tris, const std::vector<int>& wall, c
   return count;
 }
 
-// A square of two triangles sharing the diagonal (0,0)-(1,1).
-const std::vector<Primitive> kSquare = {tri(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)),
-                                        tri(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0))};
+// A square of two triangles sharing the diagonal (0,0)-(1,1). Built inside
+// each test, so that tri()'s check runs under the test framework.
+std::vector<Primitive> square() {
+  return {tri(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)),
+          tri(Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0))};
+}
 
 TEST(MeshContacts, SharedDiagonalCountsOnce) {
   const double r = 0.1;
   // On the diagonal: both triangles give the same point (a tie).
-  EXPECT_EQ(contacts(kSquare, {0, 0}, Vec3(0.5, 0.5, 0.09), r), 1);
+  EXPECT_EQ(contacts(square(), {0, 0}, Vec3(0.5, 0.5, 0.09), r), 1);
   // Just inside the first triangle, near the diagonal: the second only reaches
   // its edge, farther away.
-  EXPECT_EQ(contacts(kSquare, {0, 0}, Vec3(0.52, 0.48, 0.09), r), 1);
+  EXPECT_EQ(contacts(square(), {0, 0}, Vec3(0.52, 0.48, 0.09), r), 1);
   // Two different walls keep their own contacts.
-  EXPECT_EQ(contacts(kSquare, {0, 1}, Vec3(0.5, 0.5, 0.09), r), 2);
+  EXPECT_EQ(contacts(square(), {0, 1}, Vec3(0.5, 0.5, 0.09), r), 2);
 }
 
 TEST(MeshContacts, VertexOfAFanCountsOnce) {

@@ -22,6 +22,11 @@ template <int D>
 void drop_shared_features(const Primitive* const* prims, const int* wall, const Closest<D>* closest,
                           char* touching, int count, double r) {
   if constexpr (D == 3) {
+    // Same point / same distance up to round-off: closest points of
+    // neighbouring triangles differ by a few ulps of the coordinates (1e-16 of
+    // the mesh size), far below 1e-9 r, while distinct contact points of one
+    // grain lie a fair part of r apart. (The membrane contacts,
+    // dem/membrane/contact.cpp, use their own topology-based rule.)
     const double tol = 1e-9 * r;
     for (int a = 0; a < count; ++a) {
       if (!touching[a] || prims[a]->kind != PrimitiveKind::Triangle) continue;
