@@ -42,8 +42,7 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
       throw InputError(path +
                        ": the DAN scenario of a comparison needs model = \"dan\" on a "
                        "[path] of type \"flume\"");
-    return geometry::make_flume(sc.path.beta_deg, sc.path.arc_radius, sc.path.l_star,
-                                sc.path.barrier_length);
+    return runout::flume_of(sc.path);
   }
   throw InputError(
       fmt::format("{}: method '{}' cannot take part in a flume comparison yet", path, method));

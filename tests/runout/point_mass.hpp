@@ -1,8 +1,14 @@
 #pragma once
-// The reference for where a pile stops on a curved path: a point mass sliding
+// Reference solutions shared by the DAN and the 2D finite-volume tests.
+//
+// point_mass_stop: where a pile stops on a curved path: a point mass sliding
 // along it from rest with Coulomb friction, the normal force including the
 // centripetal term v^2 kappa (optional), integrated by RK4 with a 10 us step
-// until it stops. Shared by the DAN and the 2D finite-volume tests.
+// until it stops.
+//
+// savage_hutter_lambda: the spreading ratio lambda(T) of the Savage-Hutter
+// parabolic cap, lambda'' = a / lambda^2, lambda(0) = 1, lambda'(0) = 0
+// (spec runout.md), by RK4 with a fine step.
 #include <algorithm>
 #include <cmath>
 
@@ -31,6 +37,20 @@ inline double point_mass_stop(const RunoutPath& path, double s0, double tan_phi,
     v = vn;
   }
   return s;
+}
+
+inline double savage_hutter_lambda(double a, double T, double step = 1e-5) {
+  double lam = 1, dlam = 0;
+  auto f = [&](double l) { return a / (l * l); };
+  for (int k = 0; k < static_cast<int>(T / step + 0.5); ++k) {
+    const double a1 = f(lam), b1 = dlam;
+    const double a2 = f(lam + 0.5 * step * b1), b2 = dlam + 0.5 * step * a1;
+    const double a3 = f(lam + 0.5 * step * b2), b3 = dlam + 0.5 * step * a2;
+    const double a4 = f(lam + step * b3), b4 = dlam + step * a3;
+    lam += step / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
+    dlam += step / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+  }
+  return lam;
 }
 
 }  // namespace talus::runout::reference

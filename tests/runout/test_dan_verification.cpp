@@ -113,17 +113,8 @@ TEST(DanVerification, SavageHutterParabolicCap) {
     ASSERT_GT(model.blocks().v.front(), 0.0) << "solution invalid from t = " << model.blocks().time;
   }
   // lambda(T) from the ODE with RK4 (fine step).
-  double lam = 1, dlam = 0;
-  const double c = 2 * K * g * std::cos(zeta) * h0 / (L0 * L0), h = 1e-5;
-  for (int k = 0; k < static_cast<int>(T / h + 0.5); ++k) {
-    auto f = [&](double l) { return c / (l * l); };
-    const double a1 = f(lam), b1 = dlam;
-    const double a2 = f(lam + 0.5 * h * b1), b2 = dlam + 0.5 * h * a1;
-    const double a3 = f(lam + 0.5 * h * b2), b3 = dlam + 0.5 * h * a2;
-    const double a4 = f(lam + h * b3), b4 = dlam + h * a3;
-    lam += h / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
-    dlam += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
-  }
+  const double lam =
+      reference::savage_hutter_lambda(2 * K * g * std::cos(zeta) * h0 / (L0 * L0), T);
   ASSERT_GT(lam, 1.2);  // the pile has spread noticeably: the test can tell
   const double a = g * (std::sin(zeta) - std::tan(deg2rad(delta)) * std::cos(zeta));
   const double xc = xc0 + u0 * T + 0.5 * a * T * T;

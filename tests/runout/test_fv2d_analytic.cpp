@@ -69,17 +69,7 @@ CapRun cap_run(double dx) {
       if (f.state().h[k] > 1e-3) min_u = std::min(min_u, f.state().hu[k] / f.state().h[k]);
   });
   EXPECT_GT(min_u, 0.0);  // the analytic solution is valid throughout
-  double lam = 1, dlam = 0;
-  const double a_lam = 2 * K * kG * c * h0 / (L0 * L0), step = 1e-5;
-  for (int k = 0; k < static_cast<int>(T / step + 0.5); ++k) {
-    auto f = [&](double l) { return a_lam / (l * l); };
-    const double a1 = f(lam), b1 = dlam;
-    const double a2 = f(lam + 0.5 * step * b1), b2 = dlam + 0.5 * step * a1;
-    const double a3 = f(lam + 0.5 * step * b2), b3 = dlam + 0.5 * step * a2;
-    const double a4 = f(lam + step * b3), b4 = dlam + step * a3;
-    lam += step / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
-    dlam += step / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
-  }
+  const double lam = reference::savage_hutter_lambda(2 * K * kG * c * h0 / (L0 * L0), T);
   const double a = kG * (std::sin(zeta) - std::tan(delta) * c);
   const double xc = xc0 + (u0 * T + 0.5 * a * T * T) * c, xm = centre_x(s);
   double m2 = 0.0, l1 = 0.0;

@@ -85,7 +85,7 @@ void read_path(TomlReader& r, const detail::DemContext& ctx, runout::PathSpec& p
     p.barrier_length = detail::optional_number_in(r, "barrier_length", positive());
     p.width = number_in(r, "width", p.width, positive());
     try {
-      geometry::make_flume(p.beta_deg, p.arc_radius, p.l_star, p.barrier_length);
+      runout::flume_of(p);
     } catch (const InputError& e) {
       r.fail("type", e.what());
     }

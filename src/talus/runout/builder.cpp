@@ -10,9 +10,7 @@ namespace talus::runout {
 
 RunoutPath build_path(const PathSpec& spec) {
   if (spec.kind == PathKind::Flume) {
-    const auto flume =
-        geometry::make_flume(spec.beta_deg, spec.arc_radius, spec.l_star, spec.barrier_length);
-    return path_from_flume(flume, spec.width, spec.spacing);
+    return path_from_flume(flume_of(spec), spec.width, spec.spacing);
   }
   return path_from_profile(spec.profile_points, spec.profile_widths, spec.smoothing_length,
                            spec.spacing);
@@ -23,8 +21,7 @@ DanSetup build_dan(const RunoutScenario& sc) {
   double barrier_s = std::nan("");
   std::vector<Vec2> polygon = sc.release.polygon;
   if (sc.path.kind == PathKind::Flume) {
-    const auto flume = geometry::make_flume(sc.path.beta_deg, sc.path.arc_radius, sc.path.l_star,
-                                            sc.path.barrier_length);
+    const auto flume = flume_of(sc.path);
     barrier_s = flume.arc_end_s();
     if (sc.release.kind == ReleaseKind::Flume)
       polygon = {flume.release[0], flume.release[1], flume.release[2]};

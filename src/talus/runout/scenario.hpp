@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "talus/geometry/flume.hpp"
 #include "talus/runout/dan.hpp"
 #include "talus/runout/driver.hpp"
 #include "talus/runout/grid/fv2d.hpp"
@@ -30,6 +31,11 @@ struct PathSpec {
   double width = 1.0;                   // channel width (flume), m
   double spacing = 1e-3;                // path table resolution, m
 };
+
+// The flume of a path of type flume, with all four of its parameters.
+inline geometry::FlumeGeometry flume_of(const PathSpec& p) {
+  return geometry::make_flume(p.beta_deg, p.arc_radius, p.l_star, p.barrier_length);
+}
 
 struct ReleaseSpec {
   ReleaseKind kind = ReleaseKind::Flume;  // the triangle behind the flume's gate
