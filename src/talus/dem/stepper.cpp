@@ -16,19 +16,13 @@
 #include "talus/dem/kuen_rolling.hpp"
 #include "talus/dem/linear_pairs.hpp"
 #include "talus/dem/membrane/membrane_step.hpp"
+#include "talus/dem/pair_kinematics.hpp"
 #include "talus/dem/thread_partition.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
 
 namespace talus::dem {
 
 namespace {
-
-// Force on i (j gets the opposite) and the torques on i and j of one pair.
-template <int D>
-struct PairResult {
-  typename Space<D>::Vec f;
-  typename Space<D>::Rot ti, tj;
-};
 
 template <int D, class Model>
 class Stepper final : public StepperBase<D> {
@@ -347,34 +341,13 @@ class Stepper final : public StepperBase<D> {
       if constexpr (Model::has_rolling) nl.pair_roll[k] = Space<D>::rot_zero();
       return false;
     }
-    const double dist = std::sqrt(d2);
-    ContactKinematics<D> kin;
-    kin.n = d * (1.0 / dist);
-    kin.overlap = rs - dist;
-    const double ci = p.r[i] - 0.5 * kin.overlap, cj = p.r[j] - 0.5 * kin.overlap;
-    kin.r_eff = p.r[i] * p.r[j] / (p.r[i] + p.r[j]);
-    kin.m_eff = p.m[i] * p.m[j] / (p.m[i] + p.m[j]);
-    if constexpr (Model::needs_inertia) {
-      const double ia = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
-      const double ib = 1.0 / p.inv_I[j] + p.m[j] * p.r[j] * p.r[j];
-      kin.inertia_eff = ia * ib / (ia + ib);
-    } else {
-      kin.inertia_eff = 0.0;
-    }
-    const Vec vrel = p.v[i] - p.v[j];
-    kin.vn = vrel.dot(kin.n);
-    const Rot warm = ci * p.w[i] + cj * p.w[j];
-    kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(warm, kin.n);
-    kin.w_rel = p.w[i] - p.w[j];
+    const auto pk = pair_kinematics<D, Model::needs_inertia>(p, i, j, d, d2);
     ContactForce<D> cf;
     ContactHistory<D> h{nl.pair_shear[k], nl.pair_roll[k]};
-    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], kin, h, s_.dt, cf);
+    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], pk.kin, h, s_.dt, cf);
     nl.pair_shear[k] = h.shear;
     if constexpr (Model::has_rolling) nl.pair_roll[k] = h.roll;
-    out.f = cf.fn * kin.n + cf.ft;
-    const Rot tq = -Space<D>::cross(kin.n, cf.ft);
-    out.ti = ci * tq + cf.roll_torque;
-    out.tj = cj * tq - cf.roll_torque;
+    out = pair_result(pk, cf);
     return true;
   }
 
