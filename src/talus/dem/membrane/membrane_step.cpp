@@ -94,7 +94,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
       if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
       grids_[k].query(c, p.r[i], candidates_);
       if (candidates_.empty()) continue;
-      select_contacts(m.mesh, m.x, c, p.r[i], candidates_, selected_);
+      select_contacts(m.mesh, m.x, c, p.r[i], candidates_, selected_, touched_);
       if (selected_.empty()) continue;
       const Grain g{c, p.v[i], p.w[i], p.r[i], p.m[i]};
       const GrainForce gf = grain_membrane_forces(m.mesh, m.x, m.v, m.f, p.id[i], g, selected_,

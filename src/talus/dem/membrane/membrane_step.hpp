@@ -52,7 +52,7 @@ class MembraneStep {
   std::vector<Vec3> force_, torque_;
   std::vector<int> contacts_;
   std::vector<int> candidates_;
-  std::vector<TriangleContact> selected_;
+  std::vector<TriangleContact> selected_, touched_;  // select_contacts' out and scratch
 };
 
 }  // namespace talus::dem::membrane
