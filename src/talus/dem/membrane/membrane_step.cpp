@@ -1,7 +1,6 @@
 #include "talus/dem/membrane/membrane_step.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "talus/dem/contact/pair_coefficients.hpp"
 
@@ -110,28 +109,26 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
   }
 }
 
-double MembraneStep::critical_time_step(const DemSystem<3>& s, double v_ref) const {
-  const auto& p = s.particles;
-  const int nm = static_cast<int>(s.materials.size());
-  std::vector<double> m_min(nm, 1e300), r_min(nm, 1e300);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    m_min[p.material[i]] = std::min(m_min[p.material[i]], p.m[i]);
-    r_min[p.material[i]] = std::min(r_min[p.material[i]], p.r[i]);
-  }
+double MembraneStep::internal_time_step(const DemSystem<3>& s) const {
+  double best = 1e300;
+  for (const auto& mb : s.membranes) best = std::min(best, membrane::critical_time_step(mb.body));
+  return best;
+}
+
+double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const double> m_min,
+                                       std::span<const double> r_min, double v_ref) const {
   double best = 1e300;
   for (int k = 0; k < n_membranes_; ++k) {
     const auto& m = s.membranes[k].body;
-    best = std::min(best, membrane::critical_time_step(m));
     double mv = 1e300;
     for (std::size_t i = 0; i < m.x.size(); ++i)
       if (!m.fixed[i]) mv = std::min(mv, m.mass[i]);
     if (mv >= 1e300) continue;
-    for (int a = 0; a < nm; ++a) {
+    for (std::size_t a = 0; a < m_min.size(); ++a) {
       if (m_min[a] >= 1e300) continue;
       const double me = m_min[a] * mv / (m_min[a] + mv);
-      best =
-          std::min(best, ViscoelasticHertz::critical_time_step(coeffs(a, k), me, r_min[a], v_ref) /
-                             std::sqrt(6.0));
+      best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(static_cast<int>(a), k),
+                                                                  me, r_min[a], v_ref));
     }
   }
   return best;
