@@ -6,34 +6,7 @@
 
 namespace talus::dem::membrane {
 
-double kinetic_energy(const MembraneBody& m) {
-  double e = 0.0;
-  for (std::size_t i = 0; i < m.body.x.size(); ++i)
-    e += 0.5 * m.body.mass[i] * m.body.v[i].squaredNorm();
-  return e;
-}
-
-Vec3 momentum(const MembraneBody& m) {
-  Vec3 p = Vec3::Zero();
-  for (std::size_t i = 0; i < m.body.x.size(); ++i) p += m.body.mass[i] * m.body.v[i];
-  return p;
-}
-
-std::vector<double> triangle_tension(const MembraneBody& m) {
-  const auto& b = m.body;
-  const double k = spring_constant(b.params.youngs_modulus, b.params.thickness);
-  std::vector<double> out(b.mesh.num_triangles(), 0.0);
-  for (std::size_t t = 0; t < out.size(); ++t) {
-    for (int e : b.mesh.triangle_edges[t]) {
-      const auto& edge = b.mesh.edges[e];
-      out[t] += k * ((b.x[edge.a] - b.x[edge.b]).norm() - b.rest.length[e]) / 3.0;
-    }
-  }
-  return out;
-}
-
 MembraneStep::MembraneStep(const DemSystem<3>& s) {
-  n_membranes_ = static_cast<int>(s.membranes.size());
   const auto& mats = s.materials;
   for (const auto& grain : mats)
     for (const auto& m : s.membranes) {
@@ -72,7 +45,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
   contacts_.assign(n, 0);
   double r_max = 0.0;
   for (double r : p.r) r_max = std::max(r_max, r);
-  for (int k = 0; k < n_membranes_; ++k) {
+  for (int k = 0; k < num_membranes(); ++k) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
     std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
@@ -118,7 +91,7 @@ double MembraneStep::internal_time_step(const DemSystem<3>& s) const {
 double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const double> m_min,
                                        std::span<const double> r_min, double v_ref) const {
   double best = 1e300;
-  for (int k = 0; k < n_membranes_; ++k) {
+  for (int k = 0; k < num_membranes(); ++k) {
     const auto& m = s.membranes[k].body;
     double mv = 1e300;
     for (std::size_t i = 0; i < m.x.size(); ++i)

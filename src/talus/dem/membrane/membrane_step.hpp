@@ -49,10 +49,10 @@ class MembraneStep {
  private:
   void kick(DemSystem<3>& s, double h) const;
   const ViscoelasticHertz::Coeffs& coeffs(int grain_material, int membrane) const {
-    return coeffs_[static_cast<std::size_t>(grain_material) * n_membranes_ + membrane];
+    return coeffs_[static_cast<std::size_t>(grain_material) * grids_.size() + membrane];
   }
+  int num_membranes() const { return static_cast<int>(grids_.size()); }
 
-  int n_membranes_ = 0;
   std::vector<ViscoelasticHertz::Coeffs> coeffs_;
   std::vector<TriangleGrid> grids_;
   std::vector<Vec3> force_, torque_;
