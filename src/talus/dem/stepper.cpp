@@ -123,8 +123,8 @@ class Stepper final : public StepperBase<D> {
     // and oscillates sqrt(2D) times faster than on one contact; with PFC's
     // damping this is what limits stability (a damped 2D packing does not come
     // to rest at the single-contact estimate: test_verification_packing.cpp).
-    // Grain-membrane contacts share the factor (a grain pressed into a membrane
-    // has as many contacts). The membranes' internal bound is not a contact's.
+    // Grain-membrane contacts take the same factor (a grain on a membrane among
+    // others has several contacts at once); the membranes' internal bound does not.
     best /= std::sqrt(2.0 * D);
     if constexpr (D == 3)
       if (membranes_) best = std::min(best, membranes_->internal_time_step(s_));
