@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "talus/dem/contact/pair_coefficients.hpp"
+#include "membrane_case.hpp"
 #include "talus/dem/membrane/contact.hpp"
 #include "talus/dem/membrane/forces.hpp"
 #include "talus/geometry/primitive.hpp"
@@ -20,21 +20,33 @@ using namespace talus::dem::membrane;
 
 namespace {
 
-// Götz 2024 Table 2: grains E 4.6e10 Pa, nu 0.245; membrane E 1.25 MPa, nu 1/3;
-// A = 7 ns, gamma_t = 0.3 (spec). The pair friction is the test's choice.
-ViscoelasticHertz::Coeffs coeffs(double mu) {
-  MaterialParams grain, sheet;
-  grain.youngs_modulus = 4.6e10;
-  grain.poisson_ratio = 0.245;
-  sheet.youngs_modulus = 1.25e6;
-  sheet.poisson_ratio = 1.0 / 3.0;
-  return {{effective_youngs(grain, sheet), effective_shear(grain, sheet), mu}, 7e-9, 0.3};
-}
-
 std::vector<int> all_triangles(const Mesh& m) {
   std::vector<int> t(m.num_triangles());
   for (std::size_t k = 0; k < t.size(); ++k) t[k] = static_cast<int>(k);
   return t;
+}
+
+// Triangles whose closest point lies within R of x: the contacts before the
+// priority rule.
+int raw_touching(const Mesh& m, const Vec3& x, double R) {
+  int raw = 0;
+  for (const auto& tri : m.triangles)
+    raw +=
+        (closest_on_triangle(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]], x).point -
+         x)
+            .norm() < R;
+  return raw;
+}
+
+// The forces of one fresh contact set on a mesh at rest; the vertex reactions go into f.
+GrainForce forces_at_rest(const Mesh& m, const Grain& g,
+                          const std::vector<TriangleContact>& contacts,
+                          const ViscoelasticHertz::Coeffs& c, std::vector<Vec3>& f) {
+  const std::vector<Vec3> vel(m.num_vertices(), Vec3::Zero());
+  f.assign(m.num_vertices(), Vec3::Zero());
+  ContactMemory mem;
+  mem.begin_step();
+  return grain_membrane_forces(m, m.vertices, vel, f, 0, g, contacts, c, 1e-6, mem);
 }
 
 }  // namespace
@@ -77,7 +89,7 @@ TEST(MembraneContact, ClosestPointAndWeights) {
 TEST(MembraneContact, OneNormalForceOverVertexEdgeAndFace) {
   const double s = 1.33e-3, R = 2e-3, delta = 5e-6;
   const Mesh m = flat_sheet(9, 9, s);
-  const auto c = coeffs(0.5);
+  const auto c = cases::goetz_grain_membrane(0.5);
   const double expected = 4.0 / 3.0 * c.h.e_star * std::sqrt(R) * std::pow(delta, 1.5);
   const int v = 4 * 9 + 4;  // an interior vertex
   const Edge* interior = nullptr;
@@ -88,20 +100,13 @@ TEST(MembraneContact, OneNormalForceOverVertexEdgeAndFace) {
   const Vec3 spots[3] = {m.vertices[v], 0.5 * (m.vertices[interior->a] + m.vertices[interior->b]),
                          (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0};
   const Feature kinds[3] = {Feature::Vertex, Feature::Edge, Feature::Face};
-  const std::vector<Vec3> vel(m.num_vertices(), Vec3::Zero());
   for (int k = 0; k < 3; ++k) {
     Grain g;
     g.x = spots[k] + Vec3(0, 0, R - delta);
     g.radius = R;
     g.mass = 2000 * 4.0 / 3.0 * M_PI * R * R * R;
     // Without the rule several triangles would be touched.
-    int raw = 0;
-    for (const auto& tri : m.triangles)
-      raw += (closest_on_triangle(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]], g.x)
-                  .point -
-              g.x)
-                 .norm() < R;
-    EXPECT_EQ(raw, k == 0 ? 6 : k == 1 ? 2 : 1);
+    EXPECT_EQ(raw_touching(m, g.x, R), k == 0 ? 6 : k == 1 ? 2 : 1);
     std::vector<TriangleContact> contacts;
     select_contacts(m, m.vertices, g.x, R, all_triangles(m), contacts);
     ASSERT_EQ(contacts.size(), 1u) << "spot " << k;
@@ -110,11 +115,8 @@ TEST(MembraneContact, OneNormalForceOverVertexEdgeAndFace) {
     if (k != 1) {
       EXPECT_EQ(contacts[0].kind, kinds[k]);
     }
-    std::vector<Vec3> f(m.num_vertices(), Vec3::Zero());
-    ContactMemory mem;
-    mem.begin_step();
-    const GrainForce gf =
-        grain_membrane_forces(m, m.vertices, vel, f, 0, g, contacts, c, 1e-6, mem);
+    std::vector<Vec3> f;
+    const GrainForce gf = forces_at_rest(m, g, contacts, c, f);
     EXPECT_NEAR(gf.force.z(), expected, 1e-12 * expected);
     EXPECT_NEAR(gf.force.head<2>().norm(), 0.0, 1e-12 * expected);
     Vec3 sum = gf.force;
@@ -130,7 +132,7 @@ TEST(MembraneContact, OneNormalForceOverVertexEdgeAndFace) {
 TEST(MembraneContact, PriorityOnAConvexMesh) {
   const Mesh m = geodesic_sphere(0.02, 4);
   const double R = 2e-3, delta = 1e-5;
-  const auto c = coeffs(0.5);
+  const auto c = cases::goetz_grain_membrane(0.5);
   const double expected = 4.0 / 3.0 * c.h.e_star * std::sqrt(R) * std::pow(delta, 1.5);
   const Edge& e = m.edges[17];
   const auto& t = m.triangles[e.t0];
@@ -140,7 +142,6 @@ TEST(MembraneContact, PriorityOnAConvexMesh) {
   const Feature kinds[3] = {Feature::Vertex, Feature::Edge, Feature::Face};
   const int around_v = m.vertex_triangle_start[v + 1] - m.vertex_triangle_start[v];
   const int raw_expected[3] = {around_v, 2, 1};
-  const std::vector<Vec3> vel(m.num_vertices(), Vec3::Zero());
   for (int k = 0; k < 3; ++k) {
     Grain g;
     // Outwards: radial at the vertex and at the edge midpoint (the chord's
@@ -152,22 +153,13 @@ TEST(MembraneContact, PriorityOnAConvexMesh) {
     g.x = spots[k] + (R - delta) * out_dir;
     g.radius = R;
     g.mass = 1e-5;
-    int raw = 0;
-    for (const auto& tri : m.triangles)
-      raw += (closest_on_triangle(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]], g.x)
-                  .point -
-              g.x)
-                 .norm() < R;
-    EXPECT_EQ(raw, raw_expected[k]) << "spot " << k;
+    EXPECT_EQ(raw_touching(m, g.x, R), raw_expected[k]) << "spot " << k;
     std::vector<TriangleContact> contacts;
     select_contacts(m, m.vertices, g.x, R, all_triangles(m), contacts);
     ASSERT_EQ(contacts.size(), 1u) << "spot " << k;
     EXPECT_EQ(contacts[0].kind, kinds[k]);
-    std::vector<Vec3> f(m.num_vertices(), Vec3::Zero());
-    ContactMemory mem;
-    mem.begin_step();
-    const GrainForce gf =
-        grain_membrane_forces(m, m.vertices, vel, f, 0, g, contacts, c, 1e-6, mem);
+    std::vector<Vec3> f;
+    const GrainForce gf = forces_at_rest(m, g, contacts, c, f);
     EXPECT_NEAR(gf.force.norm(), expected, 1e-9 * expected);
     EXPECT_NEAR(gf.force.normalized().dot(out_dir), 1.0, 1e-12);
   }
@@ -183,7 +175,7 @@ TEST(MembraneContact, MomentumIsConserved) {
   for (auto& p : m.vertices) p *= 1.0 + 0.05 * u(rng);
   std::vector<Vec3> vel(m.num_vertices());
   for (auto& w : vel) w = Vec3(u(rng), u(rng), u(rng)) * 0.1;
-  const auto c = coeffs(0.5);
+  const auto c = cases::goetz_grain_membrane(0.5);
   ContactMemory mem;
   int touching = 0;
   for (int trial = 0; trial < 50; ++trial) {
@@ -223,7 +215,7 @@ TEST(MembraneContact, MomentumIsConserved) {
 TEST(MembraneContact, FrictionSpringFollowsTheContactAcrossTriangles) {
   const double s = 1.33e-3, R = 2e-3, delta = 5e-6, speed = 1e-3, dt = 1e-3;
   const Mesh m = flat_sheet(12, 12, s);
-  const auto c = coeffs(1000.0);
+  const auto c = cases::goetz_grain_membrane(1000.0);
   const std::vector<Vec3> vel(m.num_vertices(), Vec3::Zero());
   Grain g;
   g.radius = R;

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "talus/dem/contact/pair_coefficients.hpp"
+#include "membrane_case.hpp"
 #include "talus/dem/membrane/contact.hpp"
 #include "talus/dem/membrane/forces.hpp"
 
@@ -33,14 +33,8 @@ struct DragResult {
 // the path prescribed; the sphere starts at its static overlap.
 DragResult drag(const Vec3& start, const Vec3& dir, double mu) {
   const double s = 1.33e-3, R = 2e-3, rho = 2000, gravity = 9.81, speed = 0.05, dt = 1e-5;
-  const Mesh sheet = flat_sheet(20, 14, s);  // 25 x 15 mm
-  MaterialParams grain, membrane;
-  grain.youngs_modulus = 4.6e10;  // Götz Table 2
-  grain.poisson_ratio = 0.245;
-  membrane.youngs_modulus = 1.25e6;
-  membrane.poisson_ratio = 1.0 / 3.0;
-  const ViscoelasticHertz::Coeffs c{
-      {effective_youngs(grain, membrane), effective_shear(grain, membrane), mu}, 7e-9, 0.3};
+  const Mesh sheet = flat_sheet(20, 14, s);                             // 25 x 15 mm
+  const ViscoelasticHertz::Coeffs c = cases::goetz_grain_membrane(mu);  // Götz Table 2
   Grain g;
   g.radius = R;
   g.mass = rho * 4.0 / 3.0 * M_PI * R * R * R;
@@ -123,13 +117,7 @@ TEST(MembraneFriction, DISABLED_SoftMembraneDrag) {
   for (const auto& e : m.mesh.edges)
     if (!e.interior()) m.fixed[e.a] = m.fixed[e.b] = 1;
   ASSERT_GT(critical_time_step(m), dt);
-  MaterialParams grain, membrane;
-  grain.youngs_modulus = 4.6e10;
-  grain.poisson_ratio = 0.245;
-  membrane.youngs_modulus = 1.25e6;
-  membrane.poisson_ratio = 1.0 / 3.0;
-  const ViscoelasticHertz::Coeffs c{
-      {effective_youngs(grain, membrane), effective_shear(grain, membrane), mu}, 7e-9, 0.3};
+  const ViscoelasticHertz::Coeffs c = cases::goetz_grain_membrane(mu);
   Grain g;
   g.radius = R;
   g.mass = 2000 * 4.0 / 3.0 * M_PI * R * R * R;

@@ -5,11 +5,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <string>
+#include <vector>
 
 #include "talus/core/error.hpp"
 #include "talus/dem/membrane/mesh.hpp"
+#include "talus/geometry/primitive.hpp"
+#include "talus/geometry/stl.hpp"
 
 using namespace talus;
 using namespace talus::dem::membrane;
@@ -162,21 +164,13 @@ TEST(MembraneMesh, BadTopologyIsAnInputError) {
 TEST(MembraneMesh, StlRoundTripMergesVertices) {
   const Mesh sphere = geodesic_sphere(0.01, 4);
   const std::string path = ::testing::TempDir() + "membrane_sphere.stl";
-  {
-    std::ofstream out(path);
-    out << "solid s\n";
-    for (const auto& t : sphere.triangles) {
-      out << " facet normal 0 0 0\n  outer loop\n";
-      for (int c : t) {
-        char line[128];
-        std::snprintf(line, sizeof line, "   vertex %.17g %.17g %.17g\n", sphere.vertices[c].x(),
-                      sphere.vertices[c].y(), sphere.vertices[c].z());
-        out << line;
-      }
-      out << "  endloop\n endfacet\n";
-    }
-    out << "endsolid s\n";
+  std::vector<geometry::Primitive> facets(sphere.num_triangles());
+  for (std::size_t k = 0; k < facets.size(); ++k) {
+    const auto& t = sphere.triangles[k];
+    ASSERT_TRUE(geometry::make_triangle(sphere.vertices[t[0]], sphere.vertices[t[1]],
+                                        sphere.vertices[t[2]], facets[k]));
   }
+  geometry::write_stl(path, facets, false);
   const Mesh m = read_stl_mesh(path);
   EXPECT_EQ(m.num_vertices(), 162u);
   EXPECT_EQ(m.num_triangles(), 320u);

@@ -3,9 +3,7 @@
 // marked "# <-" in the edited text (0: no line, e.g. a missing top-level key).
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-
+#include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
 
@@ -73,14 +71,8 @@ radius_max = 0.02
 porosity = 0.4
 )";
 
-// base with `from` replaced by `to`; from must occur exactly once.
-std::string edit(const std::string& base, const std::string& from, const std::string& to) {
-  const auto at = base.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  EXPECT_EQ(base.find(from, at + 1), std::string::npos) << from;
-  std::string out = base;
-  return at == std::string::npos ? out : out.replace(at, from.size(), to);
-}
+using cases::BadCase;
+using cases::edit;
 
 // The particle list of the 3D base replaced by another source.
 std::string with_source(const std::string& source) {
@@ -88,49 +80,9 @@ std::string with_source(const std::string& source) {
   return kBase3d.substr(0, at) + source;
 }
 
-int marked_line(const std::string& text) {
-  int line = 1;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text.compare(i, 4, "# <-") == 0) return line;
-    if (text[i] == '\n') ++line;
-  }
-  return 0;
-}
-
-std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + "talus_" + name + ".toml";
-  std::ofstream(path) << text;
-  return path;
-}
-
-struct BadCase {
-  std::string name;  // also the file name, so messages can be checked for it
-  std::string text;
-  std::string key;       // must appear quoted: 'key' (or after --set)
-  std::string expected;  // a fragment of the message
-};
-
-std::ostream& operator<<(std::ostream& out, const BadCase& c) { return out << c.name; }
-
 class BadScenario : public testing::TestWithParam<BadCase> {};
 
-TEST_P(BadScenario, InputErrorNamesFileLineAndKey) {
-  const BadCase& c = GetParam();
-  const std::string path = write_temp(c.name, c.text);
-  try {
-    parse_dem_scenario(load_scenario_file(path, {}));
-    FAIL() << "no error for:\n" << c.text;
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    const int line = marked_line(c.text);
-    const std::string head = line > 0 ? path + ":" + std::to_string(line) + ":" : path + ":";
-    EXPECT_EQ(message.rfind(head, 0), 0u) << message << "\nexpected to start with " << head;
-    if (!c.key.empty()) {
-      EXPECT_NE(message.find("'" + c.key + "'"), std::string::npos) << message;
-    }
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-  }
-}
+TEST_P(BadScenario, InputErrorNamesFileLineAndKey) { cases::expect_input_error(GetParam()); }
 
 const std::string kDensity = "density = 2500";
 
@@ -167,7 +119,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "[run] 'duration': missing (expected a positive number)"},
         BadCase{"missing_method", edit(kBase3d, "method = \"dem\"\n", ""), "method", "missing"},
         BadCase{"unknown_method", edit(kBase3d, "method = \"dem\"", "method = \"sph\" # <-"),
-                "method", "expected one of \"dem\", \"runout\", \"mpm\" or \"compare\", got \"sph\""},
+                "method",
+                "expected one of \"dem\", \"runout\", \"mpm\" or \"compare\", got \"sph\""},
         BadCase{"syntax_error", edit(kBase3d, "duration = 0.1", "duration = 0.1 0.2 # <-"), "",
                 "TOML syntax error"},
         BadCase{"dimension_4", edit(kBase3d, "dimension = 3", "dimension = 4 # <-"), "dimension",

@@ -3,8 +3,7 @@
 // line (the one marked "# <-") and key.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
+#include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
 
@@ -52,21 +51,8 @@ fixed = "edge"
 material = "rubber"
 )";
 
-std::string edit(const std::string& base, const std::string& from, const std::string& to) {
-  const auto at = base.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  std::string out = base;
-  return at == std::string::npos ? out : out.replace(at, from.size(), to);
-}
-
-int marked_line(const std::string& text) {
-  int line = 1;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text.compare(i, 4, "# <-") == 0) return line;
-    if (text[i] == '\n') ++line;
-  }
-  return 0;
-}
+using cases::BadCase;
+using cases::edit;
 
 TEST(MembraneScenario, SheetParsesWithEveryKey) {
   const auto s = parse_dem_scenario(load_scenario_text(kHead + kSheet, "sheet.toml"));
@@ -110,26 +96,10 @@ material = "rubber"
   EXPECT_DOUBLE_EQ(b.membranes[0].pressure, -9e4);
 }
 
-struct BadCase {
-  std::string name, text, key, expected;
-};
-std::ostream& operator<<(std::ostream& out, const BadCase& c) { return out << c.name; }
 class BadMembrane : public testing::TestWithParam<BadCase> {};
 
 TEST_P(BadMembrane, InputErrorNamesFileLineAndKey) {
-  const BadCase& c = GetParam();
-  const std::string path = testing::TempDir() + "talus_membrane_" + c.name + ".toml";
-  std::ofstream(path) << c.text;
-  try {
-    parse_dem_scenario(load_scenario_file(path, {}));
-    FAIL() << "no error for:\n" << c.text;
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    const std::string head = path + ":" + std::to_string(marked_line(c.text)) + ":";
-    EXPECT_EQ(message.rfind(head, 0), 0u) << message << "\nexpected to start with " << head;
-    EXPECT_NE(message.find("'" + c.key + "'"), std::string::npos) << message;
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-  }
+  cases::expect_input_error(GetParam(), "membrane_");
 }
 
 const std::string kGood = kHead + kSheet;

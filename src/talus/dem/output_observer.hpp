@@ -49,11 +49,11 @@ class DemOutputs final : public DemObserver<D> {
 
 // Wall geometry as drawable lines and triangles at time t (planes as squares of
 // side `extent` around their point, arcs and cylinders as polylines/strips).
+template <int D>
+io::WallFrame wall_frame(const DemSystem<D>& system, double extent);
+
 // A membrane's triangles at its current positions, with point data velocity
 // and fixed (1 pinned, 0 free) and cell data tension (triangle_tension, N).
 io::MeshFrame membrane_frame(const membrane::MembraneBody& m);
-
-template <int D>
-io::WallFrame wall_frame(const DemSystem<D>& system, double extent);
 
 }  // namespace talus::dem

@@ -111,13 +111,17 @@ class Stepper final : public StepperBase<D> {
           best = std::min(best, Model::critical_time_step(c, m_min[a], r_min[a], v_ref));
       }
     }
+    if constexpr (D == 3)
+      if (membranes_) best = std::min(best, membranes_->contact_time_step(s_, m_min, r_min, v_ref));
     // A particle in a dense packing has about 2D contacts (4 disks, 6 spheres)
     // and oscillates sqrt(2D) times faster than on one contact; with PFC's
     // damping this is what limits stability (a damped 2D packing does not come
     // to rest at the single-contact estimate: test_verification_packing.cpp).
+    // Grain-membrane contacts take the same factor (a grain on a membrane among
+    // others has several contacts at once); the membranes' internal bound does not.
     best /= std::sqrt(2.0 * D);
     if constexpr (D == 3)
-      if (membranes_) best = std::min(best, membranes_->critical_time_step(s_, v_ref));
+      if (membranes_) best = std::min(best, membranes_->internal_time_step(s_));
     return best;
   }
 

@@ -36,8 +36,10 @@ TrianglePoint closest_on_triangle(const Vec3& a, const Vec3& b, const Vec3& c, c
 }
 
 void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& centre, double radius,
-                     std::span<const int> candidates, std::vector<TriangleContact>& out) {
-  out.clear();
+                     std::span<const int> candidates, std::vector<TriangleContact>& out,
+                     std::vector<TriangleContact>& scratch) {
+  std::vector<TriangleContact>& touched = scratch;
+  touched.clear();
   for (int t : candidates) {
     const auto& tri = mesh.triangles[t];
     const TrianglePoint p = closest_on_triangle(x[tri[0]], x[tri[1]], x[tri[2]], centre);
@@ -46,13 +48,13 @@ void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& cent
     TriangleContact c{t, p.kind, t, p.point, p.w, d};
     if (p.kind == Feature::Vertex) c.feature = tri[p.corner];
     if (p.kind == Feature::Edge) c.feature = mesh.triangle_edges[t][p.corner];
-    out.push_back(c);
+    touched.push_back(c);
   }
   // Distances equal to within round-off, and contact points that are one.
   const double same_distance = 1e-10 * radius, same_point = 1e-3 * radius;
   const TriangleContact* none = nullptr;
   auto hit_on = [&](int t) {  // a triangle has at most one closest point
-    for (const auto& c : out)
+    for (const auto& c : touched)
       if (c.triangle == t) return &c;
     return none;
   };
@@ -68,8 +70,8 @@ void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& cent
     const TriangleContact* h = hit_on(t);
     return h && (h->kind > c.kind || h->distance < c.distance - same_distance);
   };
-  std::vector<TriangleContact> kept;
-  for (const auto& c : out) {
+  out.clear();  // the contacts kept
+  for (const auto& c : touched) {
     bool outranked = false;
     if (c.kind == Feature::Edge) {
       const Edge& e = mesh.edges[c.feature];
@@ -79,21 +81,24 @@ void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& cent
            k < mesh.vertex_triangle_start[c.feature + 1] && !outranked; ++k)
         outranked = outranked_by(c, mesh.vertex_triangle_list[k]);
     }
-    if (!outranked) kept.push_back(c);
+    if (!outranked) out.push_back(c);
   }
   // One force per shared vertex or edge, and per contact point: near a
   // vertex, round-off may report the same point as a vertex, edge or face.
-  std::stable_sort(
-      kept.begin(), kept.end(),
-      [](const TriangleContact& a, const TriangleContact& b) { return a.distance < b.distance; });
-  out.clear();
-  for (const auto& c : kept) {
-    const bool seen = std::any_of(out.begin(), out.end(), [&](const TriangleContact& k) {
+  // Nearest first; each contact is compared with those already kept, out[0, n).
+  std::stable_sort(out.begin(), out.end(), [](const TriangleContact& a, const TriangleContact& b) {
+    return a.distance < b.distance;
+  });
+  std::size_t n = 0;
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const TriangleContact& c = out[j];
+    const bool seen = std::any_of(out.begin(), out.begin() + n, [&](const TriangleContact& k) {
       return (k.kind == c.kind && k.feature == c.feature) ||
              (k.point - c.point).squaredNorm() < same_point * same_point;
     });
-    if (!seen) out.push_back(c);
+    if (!seen) out[n++] = c;
   }
+  out.resize(n);
 }
 
 namespace {
@@ -110,15 +115,18 @@ void ContactMemory::begin_step() {
   for (auto& e : previous_) e.continued = false;
 }
 
-void ContactMemory::springs(int64_t grain, std::span<const TriangleContact> contacts, double radius,
-                            std::vector<ContactHistory<3>>& out) {
+std::span<ContactHistory<3>> ContactMemory::springs(int64_t grain,
+                                                    std::span<const TriangleContact> contacts,
+                                                    double radius) {
+  std::vector<ContactHistory<3>>& out = springs_;
   out.assign(contacts.size(), ContactHistory<3>{});
   auto lo = std::lower_bound(previous_.begin(), previous_.end(), grain,
                              [](const Entry& e, int64_t g) { return e.grain < g; });
   auto hi = lo;
   while (hi != previous_.end() && hi->grain == grain) ++hi;
-  if (lo == hi) return;
-  std::vector<char> found(contacts.size(), 0);
+  if (lo == hi) return out;
+  std::vector<char>& found = found_;
+  found.assign(contacts.size(), 0);
   for (std::size_t k = 0; k < contacts.size(); ++k)
     for (auto it = lo; it != hi; ++it)
       if (!it->continued && it->feature == feature_key(contacts[k])) {
@@ -143,6 +151,7 @@ void ContactMemory::springs(int64_t grain, std::span<const TriangleContact> cont
       best->continued = true;
     }
   }
+  return out;
 }
 
 void ContactMemory::store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h) {
@@ -157,8 +166,7 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  ContactMemory& memory) {
   GrainForce out;
   if (contacts.empty()) return out;
-  std::vector<ContactHistory<3>> springs;
-  memory.springs(grain_id, contacts, g.radius, springs);
+  const std::span<ContactHistory<3>> springs = memory.springs(grain_id, contacts, g.radius);
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const TriangleContact& c = contacts[k];
     const auto& tri = mesh.triangles[c.triangle];

@@ -46,8 +46,18 @@ struct TriangleContact {
 
 // Contacts of a sphere (centre, radius) with the candidate triangles of a mesh
 // at positions x, after the priority rule; appended to out (cleared first).
+// `scratch` holds the triangles touched before the rule: pass the same vector
+// on every call, so that the contact path allocates only while it grows.
 void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& centre, double radius,
-                     std::span<const int> candidates, std::vector<TriangleContact>& out);
+                     std::span<const int> candidates, std::vector<TriangleContact>& out,
+                     std::vector<TriangleContact>& scratch);
+// The same with a scratch vector of its own (allocates; for one-off calls).
+inline void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec3& centre,
+                            double radius, std::span<const int> candidates,
+                            std::vector<TriangleContact>& out) {
+  std::vector<TriangleContact> scratch;
+  select_contacts(mesh, x, centre, radius, candidates, out, scratch);
+}
 
 // Tangential springs of grain-membrane contacts, keyed by (grain, feature).
 // When a contact moves onto another feature (face to face across an edge, say)
@@ -62,10 +72,11 @@ class ContactMemory {
   // the previous ones.
   void begin_step();
   // Springs of all contacts of one grain (exact key first, then transfers),
-  // zero for new contacts; `out` is resized to contacts.size(). Call once per
-  // grain and step, then store() each updated spring.
-  void springs(int64_t grain, std::span<const TriangleContact> contacts, double radius,
-               std::vector<ContactHistory<3>>& out);
+  // zero for new contacts, one per contact. They live in a buffer of the
+  // memory, valid until the next call. Call once per grain and step, then
+  // store() each updated spring.
+  std::span<ContactHistory<3>> springs(int64_t grain, std::span<const TriangleContact> contacts,
+                                       double radius);
   void store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h);
   std::size_t size() const { return current_.size(); }
 
@@ -78,6 +89,9 @@ class ContactMemory {
     bool continued;
   };
   std::vector<Entry> previous_, current_;
+  // Buffers of springs(), kept between calls so that they allocate only while they grow.
+  std::vector<ContactHistory<3>> springs_;
+  std::vector<char> found_;
 };
 
 // A sphere as the contact sees it.

@@ -1,40 +1,12 @@
 #include "talus/dem/membrane/membrane_step.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "talus/dem/contact/pair_coefficients.hpp"
 
 namespace talus::dem::membrane {
 
-double kinetic_energy(const MembraneBody& m) {
-  double e = 0.0;
-  for (std::size_t i = 0; i < m.body.x.size(); ++i)
-    e += 0.5 * m.body.mass[i] * m.body.v[i].squaredNorm();
-  return e;
-}
-
-Vec3 momentum(const MembraneBody& m) {
-  Vec3 p = Vec3::Zero();
-  for (std::size_t i = 0; i < m.body.x.size(); ++i) p += m.body.mass[i] * m.body.v[i];
-  return p;
-}
-
-std::vector<double> triangle_tension(const MembraneBody& m) {
-  const auto& b = m.body;
-  const double k = spring_constant(b.params.youngs_modulus, b.params.thickness);
-  std::vector<double> out(b.mesh.num_triangles(), 0.0);
-  for (std::size_t t = 0; t < out.size(); ++t) {
-    for (int e : b.mesh.triangle_edges[t]) {
-      const auto& edge = b.mesh.edges[e];
-      out[t] += k * ((b.x[edge.a] - b.x[edge.b]).norm() - b.rest.length[e]) / 3.0;
-    }
-  }
-  return out;
-}
-
 MembraneStep::MembraneStep(const DemSystem<3>& s) {
-  n_membranes_ = static_cast<int>(s.membranes.size());
   const auto& mats = s.materials;
   for (const auto& grain : mats)
     for (const auto& m : s.membranes) {
@@ -73,7 +45,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
   contacts_.assign(n, 0);
   double r_max = 0.0;
   for (double r : p.r) r_max = std::max(r_max, r);
-  for (int k = 0; k < n_membranes_; ++k) {
+  for (int k = 0; k < num_membranes(); ++k) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
     std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
@@ -94,7 +66,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
       if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
       grids_[k].query(c, p.r[i], candidates_);
       if (candidates_.empty()) continue;
-      select_contacts(m.mesh, m.x, c, p.r[i], candidates_, selected_);
+      select_contacts(m.mesh, m.x, c, p.r[i], candidates_, selected_, touched_);
       if (selected_.empty()) continue;
       const Grain g{c, p.v[i], p.w[i], p.r[i], p.m[i]};
       const GrainForce gf = grain_membrane_forces(m.mesh, m.x, m.v, m.f, p.id[i], g, selected_,
@@ -110,28 +82,26 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
   }
 }
 
-double MembraneStep::critical_time_step(const DemSystem<3>& s, double v_ref) const {
-  const auto& p = s.particles;
-  const int nm = static_cast<int>(s.materials.size());
-  std::vector<double> m_min(nm, 1e300), r_min(nm, 1e300);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    m_min[p.material[i]] = std::min(m_min[p.material[i]], p.m[i]);
-    r_min[p.material[i]] = std::min(r_min[p.material[i]], p.r[i]);
-  }
+double MembraneStep::internal_time_step(const DemSystem<3>& s) const {
   double best = 1e300;
-  for (int k = 0; k < n_membranes_; ++k) {
+  for (const auto& mb : s.membranes) best = std::min(best, membrane::critical_time_step(mb.body));
+  return best;
+}
+
+double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const double> m_min,
+                                       std::span<const double> r_min, double v_ref) const {
+  double best = 1e300;
+  for (int k = 0; k < num_membranes(); ++k) {
     const auto& m = s.membranes[k].body;
-    best = std::min(best, membrane::critical_time_step(m));
     double mv = 1e300;
     for (std::size_t i = 0; i < m.x.size(); ++i)
       if (!m.fixed[i]) mv = std::min(mv, m.mass[i]);
     if (mv >= 1e300) continue;
-    for (int a = 0; a < nm; ++a) {
+    for (std::size_t a = 0; a < m_min.size(); ++a) {
       if (m_min[a] >= 1e300) continue;
       const double me = m_min[a] * mv / (m_min[a] + mv);
-      best =
-          std::min(best, ViscoelasticHertz::critical_time_step(coeffs(a, k), me, r_min[a], v_ref) /
-                             std::sqrt(6.0));
+      best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(static_cast<int>(a), k),
+                                                                  me, r_min[a], v_ref));
     }
   }
   return best;

@@ -5,6 +5,7 @@
 // adds them before the grains' second half kick. Everything here runs on one
 // thread (the kernels scatter to shared vertices); the stepper calls it inside
 // its serial section, after the grains have drifted.
+#include <span>
 #include <vector>
 
 #include "talus/dem/contact/hertz_mindlin.hpp"
@@ -34,25 +35,30 @@ class MembraneStep {
     p.wall_contacts[i] += contacts_[i];
   }
 
-  // Stable step of the membranes: min over membranes of the internal bound
-  // (membrane::critical_time_step) and of the Hertz contact of the lightest
-  // grain of each material with the lightest free membrane particle at v_ref,
-  // divided by sqrt(6) as the grains' bound (several contacts at once).
-  double critical_time_step(const DemSystem<3>& s, double v_ref) const;
+  // The two bounds of the run's stable step (Stepper::critical_time_step) that
+  // the membranes add. Internal: min over membranes of
+  // membrane::critical_time_step. Contact: min over membranes and grain
+  // materials a of the single Hertz contact at v_ref of the lightest grain of
+  // a (mass m_min[a], radius r_min[a], the stepper's per-material minima, 1e300
+  // for none) with the lightest free membrane particle; the stepper divides it
+  // by the same packing factor as the grains' contacts.
+  double internal_time_step(const DemSystem<3>& s) const;
+  double contact_time_step(const DemSystem<3>& s, std::span<const double> m_min,
+                           std::span<const double> r_min, double v_ref) const;
 
  private:
   void kick(DemSystem<3>& s, double h) const;
   const ViscoelasticHertz::Coeffs& coeffs(int grain_material, int membrane) const {
-    return coeffs_[static_cast<std::size_t>(grain_material) * n_membranes_ + membrane];
+    return coeffs_[static_cast<std::size_t>(grain_material) * grids_.size() + membrane];
   }
+  int num_membranes() const { return static_cast<int>(grids_.size()); }
 
-  int n_membranes_ = 0;
   std::vector<ViscoelasticHertz::Coeffs> coeffs_;
   std::vector<TriangleGrid> grids_;
   std::vector<Vec3> force_, torque_;
   std::vector<int> contacts_;
   std::vector<int> candidates_;
-  std::vector<TriangleContact> selected_;
+  std::vector<TriangleContact> selected_, touched_;  // select_contacts' out and scratch
 };
 
 }  // namespace talus::dem::membrane

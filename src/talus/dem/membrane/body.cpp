@@ -1,0 +1,31 @@
+#include "talus/dem/membrane/body.hpp"
+
+namespace talus::dem::membrane {
+
+double kinetic_energy(const MembraneBody& m) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < m.body.x.size(); ++i)
+    e += 0.5 * m.body.mass[i] * m.body.v[i].squaredNorm();
+  return e;
+}
+
+Vec3 momentum(const MembraneBody& m) {
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < m.body.x.size(); ++i) p += m.body.mass[i] * m.body.v[i];
+  return p;
+}
+
+std::vector<double> triangle_tension(const MembraneBody& m) {
+  const auto& b = m.body;
+  const double k = spring_constant(b.params.youngs_modulus, b.params.thickness);
+  std::vector<double> out(b.mesh.num_triangles(), 0.0);
+  for (std::size_t t = 0; t < out.size(); ++t) {
+    for (int e : b.mesh.triangle_edges[t]) {
+      const auto& edge = b.mesh.edges[e];
+      out[t] += k * ((b.x[edge.a] - b.x[edge.b]).norm() - b.rest.length[e]) / 3.0;
+    }
+  }
+  return out;
+}
+
+}  // namespace talus::dem::membrane
