@@ -207,12 +207,12 @@ mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
   std::vector<TomlReader> materials = root.tables("materials");
   if (materials.empty()) root.fail("materials", "missing: at least one [[materials]] table");
   for (std::size_t i = 0; i < materials.size(); ++i) {
-    s.materials.push_back(read_material(materials[i]));
-    for (std::size_t j = 0; j < i; ++j)
-      if (s.materials[j].name == s.materials[i].name)
-        materials[i].fail("name", fmt::format("material '{}' is defined twice (first at line {})",
-                                              s.materials[i].name, materials[j].line()));
-    ctx.material_names.push_back(s.materials[i].name);
+    auto m = read_material(materials[i]);
+    detail::check_unique_name(
+        materials[i], s.materials, m.name, "material", "defined",
+        [&](std::size_t j) { return fmt::format("at line {}", materials[j].line()); });
+    ctx.material_names.push_back(m.name);
+    s.materials.push_back(std::move(m));
   }
   std::vector<TomlReader> bodies = root.tables("bodies");
   if (bodies.empty()) root.fail("bodies", "missing: at least one [[bodies]] table");
