@@ -20,6 +20,30 @@ void write_summary_file(nlohmann::json& j, const RunSummary& summary, const std:
   std::filesystem::rename(tmp, summary.output / "summary.json");
 }
 
+// What every summary starts with; `model` only where a method has several (runout).
+nlohmann::json header(const std::string& status, const char* method, const char* model,
+                      int dimension, nlohmann::json scenario) {
+  nlohmann::json j = {{"talus_version", talus::version()},
+                      {"status", status},
+                      {"method", method},
+                      {"dimension", dimension},
+                      {"scenario", std::move(scenario)}};
+  if (model) j["model"] = model;
+  return j;
+}
+
+// Steps, times and the throughput: `items` (particles, blocks, points, cells)
+// advanced per second of the time loop.
+nlohmann::json run_block(const RunSummary& summary, double simulated_time, const char* rate_key,
+                         double items) {
+  return nlohmann::json{
+      {"steps", summary.steps},
+      {"simulated_time_s", simulated_time},
+      {"loop_wall_s", summary.loop_seconds},
+      {"setup_wall_s", summary.setup_seconds},
+      {rate_key, summary.loop_seconds > 0 ? items * summary.steps / summary.loop_seconds : 0.0}};
+}
+
 }  // namespace
 
 template <int D>
@@ -37,39 +61,25 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
                      {"peak_force_N", outputs.peak_wall_force[w]},
                      {"impulse_Ns", {wall.impulse.x(), wall.impulse.y(), wall.impulse.z()}}});
   }
-  json j = {
-      {"talus_version", talus::version()},
-      {"status", status},
-      {"method", "dem"},
-      {"dimension", D},
-      {"scenario", io::scenario_to_json(sc)},
-      {"resolved",
-       {{"time_step_s", s.dt},
-        {"critical_time_step_s", run.critical_time_step},
-        {"reference_impact_speed_m_s", run.reference_speed},
-        {"skin_m", s.skin},
-        {"settle_time_s", run.settle_time},
-        {"threads", threads}}},
-      {"run",
-       {{"steps", summary.steps},
-        {"simulated_time_s", s.time},
-        {"loop_wall_s", summary.loop_seconds},
-        {"setup_wall_s", summary.setup_seconds},
-        {"particle_steps_per_s",
-         summary.loop_seconds > 0 ? p.size() * summary.steps / summary.loop_seconds : 0.0},
-        {"neighbour_builds", s.neighbours.builds}}},
-      {"metrics",
-       {{"particles", p.size()},
-        {"particles_removed", s.removed},
-        {"kinetic_energy_J", dem::kinetic_energy(p)},
-        {"rotational_energy_J", dem::rotational_energy(p)},
-        {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
-        {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
-        {"front_x_m", dem::front_x(p)},
-        {"top_m", dem::top(p)},
-        {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
-        {"walls", walls}}},
-  };
+  json j = header(status, "dem", nullptr, D, io::scenario_to_json(sc));
+  j["resolved"] = {{"time_step_s", s.dt},
+                   {"critical_time_step_s", run.critical_time_step},
+                   {"reference_impact_speed_m_s", run.reference_speed},
+                   {"skin_m", s.skin},
+                   {"settle_time_s", run.settle_time},
+                   {"threads", threads}};
+  j["run"] = run_block(summary, s.time, "particle_steps_per_s", p.size());
+  j["run"]["neighbour_builds"] = s.neighbours.builds;
+  j["metrics"] = {{"particles", p.size()},
+                  {"particles_removed", s.removed},
+                  {"kinetic_energy_J", dem::kinetic_energy(p)},
+                  {"rotational_energy_J", dem::rotational_energy(p)},
+                  {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
+                  {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
+                  {"front_x_m", dem::front_x(p)},
+                  {"top_m", dem::top(p)},
+                  {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
+                  {"walls", walls}};
   for (const auto& [name, value] : summary.analysis.items()) j[name] = value;
   write_summary_file(j, summary, error);
 }
@@ -92,39 +102,25 @@ void write_runout_summary(const runout::RunoutScenario& sc, const runout::DanMod
                 {"distance_on_barrier_m", u.distance_on_barrier},
                 {"time_s", u.time}};
   };
-  json j = {
-      {"talus_version", talus::version()},
-      {"status", status},
-      {"method", "runout"},
-      {"model", "dan"},
-      {"dimension", 1},
-      {"scenario", io::runout_scenario_to_json(sc)},
-      {"resolved",
-       {{"boundary_blocks", model.size()},
-        {"time_step_s", sc.control.time_step > 0 ? json(sc.control.time_step) : json("auto")},
-        {"path_s_begin_m", model.path().s_begin()},
-        {"path_s_end_m", model.path().s_end()}}},
-      {"run",
-       {{"steps", summary.steps},
-        {"simulated_time_s", model.blocks().time},
-        {"loop_wall_s", summary.loop_seconds},
-        {"setup_wall_s", summary.setup_seconds},
-        {"block_steps_per_s",
-         summary.loop_seconds > 0 ? model.size() * summary.steps / summary.loop_seconds : 0.0}}},
-      {"metrics",
-       {{"mass_kg", model.total_mass()},
-        {"volume_m3", model.deformed_volume()},
-        {"front_s_m", model.blocks().s.back()},
-        {"tail_s_m", r.tail_s},
-        {"tail_s_absolute_m", r.tail_s_absolute},
-        {"barrier_arrival_time_s", r.barrier_arrival_time},
-        {"rest_time_s", r.rest_time},
-        {"runup_max", runup(r.runup_max)},
-        {"runup_final", runup(r.runup_final)},
-        {"max_speed_m_s", r.max_speed},
-        {"max_depth_m", r.max_depth},
-        {"kinetic_energy_J", model.kinetic_energy()}}},
-  };
+  json j = header(status, "runout", "dan", 1, io::runout_scenario_to_json(sc));
+  j["resolved"] = {
+      {"boundary_blocks", model.size()},
+      {"time_step_s", sc.control.time_step > 0 ? json(sc.control.time_step) : json("auto")},
+      {"path_s_begin_m", model.path().s_begin()},
+      {"path_s_end_m", model.path().s_end()}};
+  j["run"] = run_block(summary, model.blocks().time, "block_steps_per_s", model.size());
+  j["metrics"] = {{"mass_kg", model.total_mass()},
+                  {"volume_m3", model.deformed_volume()},
+                  {"front_s_m", model.blocks().s.back()},
+                  {"tail_s_m", r.tail_s},
+                  {"tail_s_absolute_m", r.tail_s_absolute},
+                  {"barrier_arrival_time_s", r.barrier_arrival_time},
+                  {"rest_time_s", r.rest_time},
+                  {"runup_max", runup(r.runup_max)},
+                  {"runup_final", runup(r.runup_final)},
+                  {"max_speed_m_s", r.max_speed},
+                  {"max_depth_m", r.max_depth},
+                  {"kinetic_energy_J", model.kinetic_energy()}};
   write_summary_file(j, summary, error);
 }
 
@@ -142,37 +138,23 @@ void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& s,
     cracked += c0 > 0.0 && p.state[i].cohesion < c0;
   }
   const double front = mpm::front_x(p), height = mpm::top(p, s.gravity());
-  json j = {
-      {"talus_version", talus::version()},
-      {"status", status},
-      {"method", "mpm"},
-      {"dimension", D},
-      {"scenario", io::mpm_scenario_to_json(sc)},
-      {"resolved",
-       {{"last_time_step_s", s.last_dt},
-        {"cell_size_m", s.grid.h},
-        {"gimp_half_width_over_h", s.params.gimp_half_width},
-        {"grid_nodes", s.grid.nodes()},
-        {"threads", threads}}},
-      {"run",
-       {{"steps", summary.steps},
-        {"simulated_time_s", s.time},
-        {"loop_wall_s", summary.loop_seconds},
-        {"setup_wall_s", summary.setup_seconds},
-        {"point_steps_per_s",
-         summary.loop_seconds > 0 ? p.size() * summary.steps / summary.loop_seconds : 0.0}}},
-      {"metrics",
-       {{"points", p.size()},
-        {"kinetic_energy_J", mpm::kinetic_energy(p)},
-        {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
-        {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
-        {"front_x_m", front},
-        {"front_advance_m", front - outputs.initial_front_x},
-        {"top_m", height},
-        {"top_change_m", height - outputs.initial_top},
-        {"yielding_points", yielding},
-        {"cracked_points", cracked}}},
-  };
+  json j = header(status, "mpm", nullptr, D, io::mpm_scenario_to_json(sc));
+  j["resolved"] = {{"last_time_step_s", s.last_dt},
+                   {"cell_size_m", s.grid.h},
+                   {"gimp_half_width_over_h", s.params.gimp_half_width},
+                   {"grid_nodes", s.grid.nodes()},
+                   {"threads", threads}};
+  j["run"] = run_block(summary, s.time, "point_steps_per_s", p.size());
+  j["metrics"] = {{"points", p.size()},
+                  {"kinetic_energy_J", mpm::kinetic_energy(p)},
+                  {"peak_kinetic_energy_J", outputs.peak_kinetic_energy},
+                  {"peak_kinetic_energy_time_s", outputs.peak_kinetic_energy_time},
+                  {"front_x_m", front},
+                  {"front_advance_m", front - outputs.initial_front_x},
+                  {"top_m", height},
+                  {"top_change_m", height - outputs.initial_top},
+                  {"yielding_points", yielding},
+                  {"cracked_points", cracked}};
   write_summary_file(j, summary, error);
 }
 
@@ -197,43 +179,29 @@ void write_fv2d_summary(const runout::RunoutScenario& sc, const runout::Fv2dSolv
     peak_pressure = std::max(peak_pressure, m.pressure[c]);
   }
   const double volume = solver.volume();
-  json j = {
-      {"talus_version", talus::version()},
-      {"status", status},
-      {"method", "runout"},
-      {"model", "fv2d"},
-      {"dimension", 2},
-      {"scenario", io::runout_scenario_to_json(sc)},
-      {"resolved",
-       {{"cells_x", g.nx},
-        {"cells_y", g.ny},
-        {"cell_size_m", {g.dx, g.dy}},
-        {"x_west", sc.grid.x_west},
-        {"y_north", sc.grid.y_north},
-        {"threads", threads}}},
-      {"run",
-       {{"steps", summary.steps},
-        {"simulated_time_s", solver.state().time},
-        {"loop_wall_s", summary.loop_seconds},
-        {"setup_wall_s", summary.setup_seconds},
-        {"cell_updates_per_s",
-         summary.loop_seconds > 0 ? g.cells() * summary.steps / summary.loop_seconds : 0.0}}},
-      {"metrics",
-       {{"released_volume_m3", initial_volume},
-        {"volume_m3", volume},
-        {"outflow_volume_m3", solver.outflow_volume()},
-        {"volume_error_relative",
-         initial_volume > 0
-             ? std::abs(volume + solver.outflow_volume() - initial_volume) / initial_volume
-             : 0.0},
-        {"max_height_m", m.peak_height},
-        {"max_speed_m_s", m.peak_speed},
-        {"max_pressure_Pa", peak_pressure},
-        {"affected_area_m2", affected_area},
-        {"deposit_area_m2", deposit_area},
-        {"at_rest", solver.at_rest()},
-        {"kinetic_energy_J", solver.kinetic_energy()}}},
-  };
+  json j = header(status, "runout", "fv2d", 2, io::runout_scenario_to_json(sc));
+  j["resolved"] = {{"cells_x", g.nx},
+                   {"cells_y", g.ny},
+                   {"cell_size_m", {g.dx, g.dy}},
+                   {"x_west", sc.grid.x_west},
+                   {"y_north", sc.grid.y_north},
+                   {"threads", threads}};
+  j["run"] = run_block(summary, solver.state().time, "cell_updates_per_s", g.cells());
+  j["metrics"] = {
+      {"released_volume_m3", initial_volume},
+      {"volume_m3", volume},
+      {"outflow_volume_m3", solver.outflow_volume()},
+      {"volume_error_relative",
+       initial_volume > 0
+           ? std::abs(volume + solver.outflow_volume() - initial_volume) / initial_volume
+           : 0.0},
+      {"max_height_m", m.peak_height},
+      {"max_speed_m_s", m.peak_speed},
+      {"max_pressure_Pa", peak_pressure},
+      {"affected_area_m2", affected_area},
+      {"deposit_area_m2", deposit_area},
+      {"at_rest", solver.at_rest()},
+      {"kinetic_energy_J", solver.kinetic_energy()}};
   write_summary_file(j, summary, error);
 }
 

@@ -3,13 +3,7 @@
 # machinery (one run per value, table, best value, errors) and one physical
 # trend: the upper slope of the deposit steepens as the grain friction grows.
 # Args: <talus binary> <source dir>.
-set -uo pipefail
-talus=$1 src=$2
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fail=0; pass=0
-check() {  # name, condition (command)
-  if eval "$2"; then pass=$((pass+1)); else echo "FAIL: $1"; fail=$((fail+1)); fi
-}
+source "$(dirname "$0")/check_lib.sh"
 db=$src/scenarios/dam_break.toml
 coarse=(--set dam_break.release.radius_min=4e-3 --set dam_break.release.radius_max=8e-3
         --set dam_break.release.porosity=0.2 --set run.duration=1.0 --set output.snapshots=false
@@ -38,7 +32,7 @@ assert j["best_value"] == j["values"][dev.index(min(dev))]
 g2 = j["targets"]["dam_break.gamma_2"]["measured"]
 assert g2[0] < g2[2], g2
 PY
-check "best value is the least deviation; slope steepens with friction" '[ $rc -eq 0 ] || { cat "$tmp/py"; false; }'
+check_rc "best value is the least deviation; slope steepens with friction"
 
 "$talus" calibrate "$db" "${args[@]}" --values 5 "${coarse[@]}" --out "$tmp/cal" >"$tmp/out" 2>&1; rc=$?
 check "existing output folder refused (exit 2)" '[ $rc -eq 2 ] && grep -q -- "--force" "$tmp/out"'
@@ -49,5 +43,4 @@ check "bad target exits 2 naming it" '[ $rc -eq 2 ] && grep -q "gamma=abc" "$tmp
   --out "$tmp/c3" >"$tmp/out" 2>&1; rc=$?
 check "invalid trial value refused before running" '[ $rc -eq 2 ] && [ ! -e "$tmp/c3/run_00" ]'
 
-echo "calibrate: $pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish calibrate

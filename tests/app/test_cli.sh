@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # Command-line contract: exit codes, error messages naming file/line/key,
 # output folder protection, outputs of a run. Args: <talus binary> <source dir>.
-set -uo pipefail
-talus=$1 src=$2
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fail=0; pass=0
-check() {  # name, condition (command)
-  if eval "$2"; then pass=$((pass+1)); else echo "FAIL: $1"; fail=$((fail+1)); fi
-}
+source "$(dirname "$0")/check_lib.sh"
 small=(--set "run.duration=0.002" --set "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}"
        --set "output.snapshot_interval=0.001")
 cc=$src/scenarios/column_collapse.toml
@@ -58,5 +52,4 @@ for f in "$src"/scenarios/*.toml; do
   check "bundled $(basename "$f") validates" '[ $rc -eq 0 ]'
 done
 
-echo "cli: $pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish cli

@@ -3,17 +3,11 @@
 # run, the report carries each method's own numbers, the plots are drawn, and
 # scenarios on different flumes are refused before anything runs.
 # Args: <talus binary> <source dir>.
-set -uo pipefail
-talus=$1 src=$2
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fail=0; pass=0
-check() {  # name, condition (command)
-  if eval "$2"; then pass=$((pass+1)); else echo "FAIL: $1"; fail=$((fail+1)); fi
-}
+source "$(dirname "$0")/check_lib.sh"
 data=$src/tests/data/scenarios
 
 "$talus" compare "$data/compare_coarse.toml" --out "$tmp/cmp" --quiet >"$tmp/out" 2>&1; rc=$?
-check "compare exits 0" '[ $rc -eq 0 ] || { cat "$tmp/out"; false; }'
+check_rc "compare exits 0" "$tmp/out"
 check "each method ran into its folder" '[ -s "$tmp/cmp/dem/summary.json" ] && [ -s "$tmp/cmp/dan/summary.json" ]'
 check "table printed and written" 'grep -q "| dem |" "$tmp/out" && grep -q "| dan |" "$tmp/cmp/comparison.md"'
 /usr/bin/python3 - "$tmp/cmp" >"$tmp/py" 2>&1 <<'PY'; rc=$?
@@ -36,7 +30,7 @@ for m in ("dem", "dan"):
     assert len(rows) > 10, m
     assert float(rows[-1]["s"]) > c["barrier_start_s"], m  # both fronts reach the barrier
 PY
-check "report matches each method's summary" '[ $rc -eq 0 ] || { cat "$tmp/py"; false; }'
+check_rc "report matches each method's summary"
 /usr/bin/python3 "$src/plots/plot_compare.py" "$tmp/cmp" >"$tmp/plots" 2>&1; rc=$?
 check "plots drawn" '[ $rc -eq 0 ] && [ -s "$tmp/cmp/plots/compare_front.png" ] && [ -s "$tmp/cmp/plots/compare_deposit.png" ]'
 
@@ -49,5 +43,4 @@ check "a method the file does not list exits 2" '[ $rc -eq 2 ] && grep -q "mpm" 
 "$talus" run "$data/compare_coarse.toml" --out "$tmp/r" >"$tmp/out" 2>&1; rc=$?
 check "talus run on a comparison file says to use compare" '[ $rc -eq 2 ] && grep -q "talus compare" "$tmp/out"'
 
-echo "compare: $pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish compare

@@ -22,14 +22,12 @@ def check(name, ok):
         print("FAIL:", name)
 
 
-coarse = ["--set", "flume.release.radius_min=4e-3", "--set", "flume.release.radius_max=8e-3",
-          "--set", "flume.release.count=540", "--set", "flume.release.porosity=0.2",
-          "--set", "run.duration=2.0", "--set", "output.snapshot_interval=0.5"]
+# flume_A_model3.toml with the reduction above (tests/data/scenarios/flume_A_coarse.toml).
+coarse = os.path.join(src, "tests", "data", "scenarios", "flume_A_coarse.toml")
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "run")
-    subprocess.run([talus, "run", os.path.join(src, "scenarios", "flume_A_model3.toml"), "--out", out,
-                    "--quiet", "--threads", "1"] + coarse, check=True)
+    subprocess.run([talus, "run", coarse, "--out", out, "--quiet", "--threads", "1"], check=True)
     summary = json.load(open(os.path.join(out, "summary.json")))
     f = summary["flume"]
     with open(os.path.join(out, "flume", "front.csv")) as fh:

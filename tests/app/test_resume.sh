@@ -2,9 +2,7 @@
 # A run killed with SIGKILL and resumed with --resume ends in the same state as
 # an uninterrupted run: the final snapshot files are byte-identical.
 # Args: <talus binary> <source dir>.
-set -uo pipefail
-talus=$1 src=$2
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/check_lib.sh"
 args=(run "$src/scenarios/column_collapse.toml" --quiet
       --set "run.duration=0.04" --set "particles.0.box={min=[0,0,0],max=[0.0201,0.0201,0.0402]}"
       --set "output.snapshot_interval=0.01" --set "output.checkpoint_interval=0.002"

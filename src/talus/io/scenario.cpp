@@ -225,14 +225,11 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   std::vector<TomlReader> walls = root.tables("walls");
   for (std::size_t i = 0; i < walls.size(); ++i) {
     auto wall = detail::read_wall(walls[i], i, ctx);
-    for (std::size_t j = 0; j < s.walls.size(); ++j) {
-      if (s.walls[j].name != wall.name) continue;
-      const std::string first = j < generated_walls
-                                    ? "[flume]"
-                                    : fmt::format("line {}", walls[j - generated_walls].line());
-      walls[i].fail("name",
-                    fmt::format("wall name '{}' is used twice (first by {})", wall.name, first));
-    }
+    detail::check_unique_name(
+        walls[i], s.walls, wall.name, "wall name", "used", [&](std::size_t j) {
+          return j < generated_walls ? std::string("by [flume]")
+                                     : fmt::format("by line {}", walls[j - generated_walls].line());
+        });
     s.walls.push_back(std::move(wall));
   }
 
@@ -243,18 +240,17 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
               "[dam_break.release]) is needed");
   for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
   std::vector<TomlReader> membranes = root.tables("membranes");
+  // Grain-membrane contacts are Hertzian (membrane/contact.hpp): the linear
+  // model's materials need not have a Young's modulus.
+  if (!membranes.empty() && s.contact.model == dem::ContactModel::Linear)
+    membranes[0].fail("material",
+                      "grain-membrane contacts use the Hertz law: membranes need contact.model "
+                      "= \"hertz_mindlin\" or \"viscoelastic_hertz\"");
   for (std::size_t i = 0; i < membranes.size(); ++i) {
     auto m = detail::read_membrane(membranes[i], i, ctx);
-    for (std::size_t j = 0; j < s.membranes.size(); ++j)
-      if (s.membranes[j].name == m.name)
-        membranes[i].fail("name", fmt::format("membrane name '{}' is used twice (first at line {})",
-                                              m.name, membranes[j].line()));
-    // Grain-membrane contacts are Hertzian (membrane/contact.hpp): the linear
-    // model's materials need not have a Young's modulus.
-    if (s.contact.model == dem::ContactModel::Linear)
-      membranes[i].fail("material",
-                        "grain-membrane contacts use the Hertz law: membranes need contact.model "
-                        "= \"hertz_mindlin\" or \"viscoelastic_hertz\"");
+    detail::check_unique_name(
+        membranes[i], s.membranes, m.name, "membrane name", "used",
+        [&](std::size_t j) { return fmt::format("at line {}", membranes[j].line()); });
     s.membranes.push_back(std::move(m));
   }
   check_densities(s, material_readers);

@@ -1,6 +1,8 @@
 #pragma once
 // Internals shared by the parts of the DEM scenario reader and writer
 // (scenario*.cpp). Not part of the public API.
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -57,6 +59,17 @@ std::string name_of(const EnumNames<E>& names, E value) {
     if (v == value) return std::string(name);
   }
   return "?";
+}
+
+// Fails at r's "name" when `name` is taken by one of `earlier` (anything with
+// a .name, in the order read): "<what> '<name>' is <verb> twice (first
+// <where(j)>)", j the first that has it.
+template <typename Earlier, typename Where>
+void check_unique_name(const TomlReader& r, const Earlier& earlier, const std::string& name,
+                       std::string_view what, std::string_view verb, Where where) {
+  for (std::size_t j = 0; j < std::size(earlier); ++j)
+    if (earlier[j].name == name)
+      r.fail("name", fmt::format("{} '{}' is {} twice (first {})", what, name, verb, where(j)));
 }
 
 // What the parts of the reader need to know about the whole scenario.

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <map>
 
 #include "talus/io/scenario_detail.hpp"
 
@@ -73,14 +72,11 @@ dem::MaterialParams read_material(TomlReader& r, dem::ContactModel model) {
 std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers,
                                                 dem::ContactModel model) {
   std::vector<dem::MaterialParams> materials;
-  std::map<std::string, int> first_line;
-  for (TomlReader& r : readers) {
-    materials.push_back(read_material(r, model));
-    const auto [it, added] = first_line.emplace(materials.back().name, r.line());
-    if (!added) {
-      r.fail("name", fmt::format("material '{}' is defined twice (first at line {})", it->first,
-                                 it->second));
-    }
+  for (std::size_t i = 0; i < readers.size(); ++i) {
+    auto m = read_material(readers[i], model);
+    check_unique_name(readers[i], materials, m.name, "material", "defined",
+                      [&](std::size_t j) { return fmt::format("at line {}", readers[j].line()); });
+    materials.push_back(std::move(m));
   }
   return materials;
 }

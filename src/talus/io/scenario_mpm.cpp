@@ -112,6 +112,21 @@ mpm::MaterialParams read_material(TomlReader& r) {
   return m;
 }
 
+// points_per_cell of a body: an integer in [1, 8].
+int read_points_per_cell(TomlReader& r, int fallback) {
+  const auto per_cell = r.integer("points_per_cell", fallback);
+  r.expect(per_cell >= 1 && per_cell <= 8, "points_per_cell", "an integer in [1, 8]");
+  return static_cast<int>(per_cell);
+}
+
+// Fails at "box" unless [min, max] lies inside the [grid].
+void check_box_in_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx,
+                       const Vec3& min, const Vec3& max) {
+  for (int d = 0; d < ctx.dimension; ++d)
+    if (min[d] < s.grid.lo[d] || max[d] > s.grid.hi[d])
+      r.fail("box", "expected a box inside the [grid] (min to max)");
+}
+
 mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx) {
   mpm::BodyParams b;
   b.material = r.required_string("material");
@@ -120,9 +135,7 @@ mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemCon
     if (s.materials[i].name == b.material) b.material_index = static_cast<int>(i), found = true;
   if (!found) detail::check_material(r, "material", b.material, ctx);
   detail::read_box(r, "box", ctx, b.min, b.max);
-  const auto per_cell = r.integer("points_per_cell", b.per_cell);
-  r.expect(per_cell >= 1 && per_cell <= 8, "points_per_cell", "an integer in [1, 8]");
-  b.per_cell = static_cast<int>(per_cell);
+  b.per_cell = read_points_per_cell(r, b.per_cell);
   b.velocity = detail::point_or(r, "velocity", ctx, Vec3::Zero());
   b.geostatic = r.enumeration("initial_stress", kInitialStress, 0) == 1;
   if (b.geostatic) {
@@ -130,9 +143,7 @@ mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemCon
   } else {
     r.reject({"k0"}, "is only used with initial_stress = \"geostatic\"");
   }
-  for (int d = 0; d < ctx.dimension; ++d)
-    if (b.min[d] < s.grid.lo[d] || b.max[d] > s.grid.hi[d])
-      r.fail("box", "expected a box inside the [grid] (min to max)");
+  check_box_in_grid(r, s, ctx, b.min, b.max);
   r.finish();
   return b;
 }
@@ -146,12 +157,8 @@ mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
                                      const DemContext& ctx) {
   mpm::RigidBodyParams b;
   detail::read_box(r, "box", ctx, b.min, b.max);
-  for (int d = 0; d < ctx.dimension; ++d)
-    if (b.min[d] < s.grid.lo[d] || b.max[d] > s.grid.hi[d])
-      r.fail("box", "expected a box inside the [grid] (min to max)");
-  const auto per_cell = r.integer("points_per_cell", b.per_cell);
-  r.expect(per_cell >= 1 && per_cell <= 8, "points_per_cell", "an integer in [1, 8]");
-  b.per_cell = static_cast<int>(per_cell);
+  check_box_in_grid(r, s, ctx, b.min, b.max);
+  b.per_cell = read_points_per_cell(r, b.per_cell);
   b.contact = r.enumeration("contact", kContacts, b.contact);
   if (b.contact == mpm::RigidContact::Friction)
     b.friction = number_in(r, "friction", 0.0, non_negative());
@@ -162,7 +169,7 @@ mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
     if (ctx.dimension == 2) {
       b.motion.angular_velocity = Vec3(0.0, 0.0, deg2rad(m->number("angular_velocity", 0.0)));
     } else {
-      b.motion.angular_velocity = m->vec3("angular_velocity", Vec3::Zero()) * (M_PI / 180.0);
+      b.motion.angular_velocity = m->vec3("angular_velocity", Vec3::Zero()).unaryExpr(&deg2rad);
     }
     b.motion.hinge = detail::point_or(*m, "hinge", ctx, Vec3::Zero());
     b.motion.start = number_in(*m, "start", 0.0, non_negative());
@@ -200,12 +207,12 @@ mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
   std::vector<TomlReader> materials = root.tables("materials");
   if (materials.empty()) root.fail("materials", "missing: at least one [[materials]] table");
   for (std::size_t i = 0; i < materials.size(); ++i) {
-    s.materials.push_back(read_material(materials[i]));
-    for (std::size_t j = 0; j < i; ++j)
-      if (s.materials[j].name == s.materials[i].name)
-        materials[i].fail("name", fmt::format("material '{}' is defined twice (first at line {})",
-                                              s.materials[i].name, materials[j].line()));
-    ctx.material_names.push_back(s.materials[i].name);
+    auto m = read_material(materials[i]);
+    detail::check_unique_name(
+        materials[i], s.materials, m.name, "material", "defined",
+        [&](std::size_t j) { return fmt::format("at line {}", materials[j].line()); });
+    ctx.material_names.push_back(m.name);
+    s.materials.push_back(std::move(m));
   }
   std::vector<TomlReader> bodies = root.tables("bodies");
   if (bodies.empty()) root.fail("bodies", "missing: at least one [[bodies]] table");
@@ -281,7 +288,7 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
     if (dim == 2)
       motion["angular_velocity"] = rad2deg(m.angular_velocity.z());
     else
-      motion["angular_velocity"] = point(m.angular_velocity * (180.0 / M_PI));
+      motion["angular_velocity"] = point(m.angular_velocity.unaryExpr(&rad2deg));
     motion["hinge"] = point(m.hinge);
     motion["start"] = m.start;
     if (std::isfinite(m.stop)) motion["stop"] = m.stop;

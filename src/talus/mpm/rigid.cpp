@@ -45,7 +45,6 @@ void RigidBody<D>::advance(double t, double dt) {
   for (auto& y : x) y = hinge + q * (y - hinge) + shift;
   for (auto& n : normal) n = q * n;
   hinge += shift;
-  displacement += shift;
   angle += D == 2 ? motion.angular_velocity.z() * tau : motion.angular_velocity.norm() * tau;
 }
 

@@ -50,9 +50,8 @@ struct RigidBody {
   RigidContact contact = RigidContact::Friction;
   double friction = 0.0;  // Coulomb coefficient mu
 
-  // Rotation angle and displacement since t = 0 (2D: angle about z).
+  // Rotation angle since t = 0 (2D: angle about z).
   double angle = 0.0;
-  Vec displacement = Vec::Zero();
 
   // Time in [t0, t1] during which the motion is active.
   double active_time(double t0, double t1) const;
