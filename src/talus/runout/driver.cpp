@@ -1,16 +1,15 @@
 #include "talus/runout/driver.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+
+#include "talus/core/progress.hpp"
 
 namespace talus::runout {
 
 DanRunStats run_dan(DanModel& model, const DanRunControl& control, RunoutTracker& tracker,
                     const std::vector<DanObserver*>& observers) {
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
-  auto last_progress = start;
+  ProgressClock progress(control.progress_seconds);
   DanRunStats stats;
   const double end = control.duration;
   // Output times are multiples of the intervals; a step never jumps past one
@@ -47,18 +46,13 @@ DanRunStats run_dan(DanModel& model, const DanRunControl& control, RunoutTracker
       break;
     }
     emit(false);
-    const auto now = clock::now();
-    if (std::chrono::duration<double>(now - last_progress).count() >= control.progress_seconds) {
-      const double wall = std::chrono::duration<double>(now - start).count();
-      for (auto* o : observers) o->on_progress(model.blocks().time, end, stats.steps / wall);
-      last_progress = now;
-    }
+    if (progress.due())
+      for (auto* o : observers) o->on_progress(model.blocks().time, end, progress.rate(stats.steps));
   }
   emit(true);
   tracker.finish(model);
-  stats.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
-  for (auto* o : observers)
-    o->on_progress(end, end, stats.steps / std::max(stats.wall_seconds, 1e-9));
+  stats.wall_seconds = progress.elapsed();
+  for (auto* o : observers) o->on_progress(end, end, progress.rate(stats.steps));
   return stats;
 }
 

@@ -1,8 +1,9 @@
 #include "talus/runout/grid/fv2d_run.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+
+#include "talus/core/progress.hpp"
 
 namespace talus::runout {
 
@@ -28,9 +29,7 @@ void Fv2dMaxima::observe(const Fv2dSolver& solver) {
 
 Fv2dRunStats run_fv2d(Fv2dSolver& solver, const Fv2dRunControl& control, Fv2dMaxima& maxima,
                       const std::vector<Fv2dObserver*>& observers) {
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
-  auto last_progress = start;
+  ProgressClock progress(control.progress_seconds);
   Fv2dRunStats stats;
   const double end = control.duration;
   const double eps = 1e-9 * std::max(1.0, end);
@@ -58,17 +57,12 @@ Fv2dRunStats run_fv2d(Fv2dSolver& solver, const Fv2dRunControl& control, Fv2dMax
       break;
     }
     series(false);
-    const auto now = clock::now();
-    if (std::chrono::duration<double>(now - last_progress).count() >= control.progress_seconds) {
-      const double wall = std::chrono::duration<double>(now - start).count();
-      for (auto* o : observers) o->on_progress(solver.state().time, end, stats.steps / wall);
-      last_progress = now;
-    }
+    if (progress.due())
+      for (auto* o : observers) o->on_progress(solver.state().time, end, progress.rate(stats.steps));
   }
   series(true);
-  stats.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
-  for (auto* o : observers)
-    o->on_progress(end, end, stats.steps / std::max(stats.wall_seconds, 1e-9));
+  stats.wall_seconds = progress.elapsed();
+  for (auto* o : observers) o->on_progress(end, end, progress.rate(stats.steps));
   return stats;
 }
 
