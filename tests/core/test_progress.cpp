@@ -1,8 +1,8 @@
-#include "talus/core/progress.hpp"
-
 #include <gtest/gtest.h>
 
 #include <thread>
+
+#include "talus/core/progress.hpp"
 
 namespace talus {
 

@@ -13,8 +13,7 @@ class ProgressClock {
   // `first_step`: the step count the loop starts from (a resumed run does not
   // count the steps before it in its rate).
   explicit ProgressClock(double interval_seconds, int64_t first_step = 0)
-      : interval_(interval_seconds), first_step_(first_step), start_(Clock::now()),
-        last_(start_) {}
+      : interval_(interval_seconds), first_step_(first_step), start_(Clock::now()), last_(start_) {}
 
   // True when `interval` wall seconds have passed since the last report (or
   // `force`); restarts the interval then.

@@ -47,7 +47,8 @@ DanRunStats run_dan(DanModel& model, const DanRunControl& control, RunoutTracker
     }
     emit(false);
     if (progress.due())
-      for (auto* o : observers) o->on_progress(model.blocks().time, end, progress.rate(stats.steps));
+      for (auto* o : observers)
+        o->on_progress(model.blocks().time, end, progress.rate(stats.steps));
   }
   emit(true);
   tracker.finish(model);

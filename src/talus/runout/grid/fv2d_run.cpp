@@ -58,7 +58,8 @@ Fv2dRunStats run_fv2d(Fv2dSolver& solver, const Fv2dRunControl& control, Fv2dMax
     }
     series(false);
     if (progress.due())
-      for (auto* o : observers) o->on_progress(solver.state().time, end, progress.rate(stats.steps));
+      for (auto* o : observers)
+        o->on_progress(solver.state().time, end, progress.rate(stats.steps));
   }
   series(true);
   stats.wall_seconds = progress.elapsed();
