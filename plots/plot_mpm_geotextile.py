@@ -88,7 +88,7 @@ def compare_plot(out, runs):
     ax.set_xlabel("time [s]")
     ax.set_ylabel("largest membrane tension [kN/m]")
     ax.grid(alpha=0.3)
-    ax.legend()
+    ax.legend(loc="upper left")
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     plt.close(fig)
