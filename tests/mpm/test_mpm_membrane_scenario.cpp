@@ -84,6 +84,7 @@ TEST(MpmMembraneScenario, BadInputNamesFileLineAndKey) {
                "at least 3 points");
   expect_error(edit(kBase, "closed = true", "closed = true\nfixed = \"first\""), "'fixed'");
   expect_error(edit(kBase, "slack = 0.1", "slack = -0.1"), "'slack'");
+  expect_error(edit(kBase, "name = \"bag\"", "name = \"my bag\""), "[[membranes]] 'name'");
   expect_error(edit(kBase, "slack = 0.1\n", ""), "'slack_box'");
   expect_error(edit(kBase, "closed = true", "closed = true\nfixd = \"first\""),
                "did you mean 'fixed'");

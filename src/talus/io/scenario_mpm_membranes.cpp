@@ -47,7 +47,11 @@ mpm::MembraneParams read_mpm_membrane(TomlReader& r, std::size_t index, const mp
                                       const DemContext& ctx) {
   mpm::MembraneParams m;
   m.name = r.string("name", fmt::format("membrane{}", index));
-  r.expect(!m.name.empty(), "name", "a non-empty name");
+  // The name heads columns of membranes.csv.
+  r.expect(
+      !m.name.empty() && m.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMN"
+                                                  "OPQRSTUVWXYZ0123456789_-") == std::string::npos,
+      "name", "a non-empty name of letters, digits, '_' and '-'");
   m.model = r.enumeration("model", kMembraneModels, m.model);
   if (ctx.dimension != 2)
     r.fail("model", "MPM membranes are 2D only (a chain of cables); this run has dimension 3");
