@@ -11,6 +11,12 @@
 //    bag through the gap), exceeds 1.2 times the residual (the mean of the
 //    largest tension over the last 0.5 s), and the residual is above zero
 //    (the sand at rest on the bed still loads the bag).
+// Measured here: peak 44.1 kN/m in the gap, residual 30.7 kN/m (ratio 1.43).
+// On the scenario's own grid (h = 0.1 m) the second statement does not hold
+// (21.5 kN/m during the opening against a residual of 21.9 kN/m): the spike
+// in the gap is a coarse-grid event and the residual depends on the no-slip
+// bed (docs/validation.md "Geotextile bag"). This test guards the reduced
+// case, not the claim at every resolution.
 #include <gtest/gtest.h>
 #include <omp.h>
 
