@@ -155,6 +155,13 @@ void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& s,
                   {"top_change_m", height - outputs.initial_top},
                   {"yielding_points", yielding},
                   {"cracked_points", cracked}};
+  if (const auto* m = outputs.membrane_outputs()) {
+    double final_max = 0.0;
+    for (const auto& mb : s.membranes) final_max = std::max(final_max, mb.max_tension());
+    j["metrics"]["membrane_peak_tension_N_m"] = m->peak_tension;
+    j["metrics"]["membrane_peak_tension_time_s"] = m->peak_tension_time;
+    j["metrics"]["membrane_final_max_tension_N_m"] = final_max;
+  }
   write_summary_file(j, summary, error);
 }
 

@@ -7,6 +7,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_detail.hpp"
+#include "talus/io/scenario_mpm_membranes.hpp"
 
 namespace talus::io {
 namespace {
@@ -186,12 +187,24 @@ mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
   return b;
 }
 
+// [[membranes]] (scenario_mpm_membranes.cpp), names unique.
+void read_membranes(TomlReader& root, mpm::MpmScenario& s, const DemContext& ctx) {
+  std::vector<TomlReader> tables = root.tables("membranes");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    auto m = detail::read_mpm_membrane(tables[i], i + 1, s, ctx);
+    detail::check_unique_name(
+        tables[i], s.membranes, m.name, "membrane", "defined",
+        [&](std::size_t j) { return fmt::format("at line {}", tables[j].line()); });
+    s.membranes.push_back(std::move(m));
+  }
+}
+
 }  // namespace
 
 mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
   TomlReader root(file.table, file.path);
   for (std::string_view key : {"method", "name", "description", "run", "grid", "materials",
-                               "bodies", "rigid_bodies", "output"})
+                               "bodies", "rigid_bodies", "membranes", "output"})
     root.mark_read(key);
   root.finish();
   mpm::MpmScenario s;
@@ -218,6 +231,7 @@ mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
   if (bodies.empty()) root.fail("bodies", "missing: at least one [[bodies]] table");
   for (auto& b : bodies) s.bodies.push_back(read_body(b, s, ctx));
   for (auto& b : root.tables("rigid_bodies")) s.rigid_bodies.push_back(read_rigid_body(b, s, ctx));
+  read_membranes(root, s, ctx);
   if (auto out = root.optional_table("output")) {
     s.output.series_interval = number_in(*out, "series_interval", 0.0, non_negative());
     s.output.snapshot_interval = number_in(*out, "snapshot_interval", 0.0, non_negative());
@@ -307,6 +321,11 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
            {"run", run},      {"grid", grid},   {"materials", materials},
            {"bodies", bodies}};
   if (!rigid.empty()) out["rigid_bodies"] = rigid;
+  if (!s.membranes.empty()) {
+    J membranes = J::array();
+    for (const auto& m : s.membranes) membranes.push_back(detail::mpm_membrane_table(m, dim));
+    out["membranes"] = membranes;
+  }
   out["output"] = output;
   return out;
 }

@@ -154,6 +154,7 @@ Solver<D> build_mpm(const MpmScenario& sc) {
           throw InputError(fmt::format(
               "[[rigid_bodies]] #{}: boundary particles lie outside the [grid]", b + 1));
   }
+  for (const auto& m : sc.membranes) solver.membranes.push_back(build_membrane<D>(m, h));
   return solver;
 }
 

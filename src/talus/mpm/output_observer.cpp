@@ -24,7 +24,15 @@ double MpmOutputs<D>::c_ratio(const Solver<D>& s, std::size_t p) const {
 }
 
 template <int D>
+MembraneOutputs<D>* MpmOutputs<D>::membranes(const Solver<D>& s) {
+  if (!membranes_ && !s.membranes.empty())
+    membranes_ = std::make_unique<MembraneOutputs<D>>(dir_, s.membranes);
+  return membranes_.get();
+}
+
+template <int D>
 void MpmOutputs<D>::on_series(const Solver<D>& s) {
+  if (auto* m = membranes(s)) m->on_series(s.time, s.membranes);
   const auto& p = s.particles;
   const double ke = kinetic_energy(p);
   double max_speed = 0.0, min_ratio = 1.0;
@@ -84,6 +92,7 @@ void MpmOutputs<D>::on_snapshot(const Solver<D>& s) {
     f.extra_scalars["stress_yz"] = syz;
   }
   particles_->add(s.time, f);
+  if (auto* m = membranes(s)) m->on_snapshot(s.time, s.membranes);
   if (s.rigid_bodies.empty()) return;
   if (!boundary_) boundary_ = std::make_unique<io::PvdSeries>(dir_, "boundary", false);
   io::ParticleFrame b;
@@ -105,6 +114,7 @@ void MpmOutputs<D>::on_snapshot(const Solver<D>& s) {
 template <int D>
 void MpmOutputs<D>::on_progress(double time, double end, double steps_per_s) {
   series_->flush();
+  if (membranes_) membranes_->flush();
   if (progress) progress(time, end, steps_per_s);
 }
 

@@ -12,6 +12,7 @@
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/vtk_writer.hpp"
 #include "talus/mpm/driver.hpp"
+#include "talus/mpm/membrane_output.hpp"
 
 namespace talus::mpm {
 
@@ -30,6 +31,8 @@ class MpmOutputs final : public MpmObserver<D> {
   // Headline values seen in the series, for the summary.
   double peak_kinetic_energy = 0.0, peak_kinetic_energy_time = 0.0;
   double initial_front_x = 0.0, initial_top = 0.0;
+  // membranes.csv and membranes.pvd, once a run with membranes is seen.
+  const MembraneOutputs<D>* membrane_outputs() const { return membranes_.get(); }
 
  private:
   double c_ratio(const Solver<D>& s, std::size_t p) const;
@@ -40,6 +43,8 @@ class MpmOutputs final : public MpmObserver<D> {
   std::unique_ptr<io::PvdSeries> particles_;
   std::unique_ptr<io::PvdSeries> boundary_;  // boundary particles of rigid bodies, if any
   bool first_ = true;
+  std::unique_ptr<MembraneOutputs<D>> membranes_;
+  MembraneOutputs<D>* membranes(const Solver<D>& s);
 };
 
 }  // namespace talus::mpm

@@ -7,6 +7,7 @@
 
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/materials.hpp"
+#include "talus/mpm/membrane.hpp"
 #include "talus/mpm/rigid.hpp"
 #include "talus/mpm/solver.hpp"
 
@@ -59,6 +60,7 @@ struct MpmScenario {
   std::vector<MaterialParams> materials;
   std::vector<BodyParams> bodies;
   std::vector<RigidBodyParams> rigid_bodies;
+  std::vector<MembraneParams> membranes;
   MpmOutputParams output;
 };
 

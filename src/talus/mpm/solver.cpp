@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
+#include "talus/mpm/membrane_grid.hpp"
 
 namespace talus::mpm {
 
@@ -33,6 +34,7 @@ double Solver<D>::time_step() const {
     const double c = wave_speed(materials[particles.material[i]]);
     speed = std::max(speed, c + particles.v[i].norm());
   }
+  speed = std::max(speed, membrane_max_speed(membranes));
   // A rigid body moves material at its own speed, carried by the same waves.
   double rigid_speed = 0.0;
   for (const auto& r : rigid_bodies) rigid_speed = std::max(rigid_speed, r.max_speed(time));
@@ -135,11 +137,12 @@ void Solver<D>::step_with(double dt) {
   const std::int64_t nodes = grid.nodes();
   double mass_floor = 0.0;
   for (double m : particles.mass) mass_floor = std::max(mass_floor, m);
-  mass_floor *= 1e-12;
+  mass_floor = 1e-12 * std::max(mass_floor, membrane_max_mass(membranes));
   const double alpha = params.local_damping;
 
   // 1. particles -> grid
   to_grid<Shape>(true);
+  membranes_to_grid<D, Shape>(membranes, grid, gravity(), params.gimp_half_width, true, time);
   grid.fold(grid.mass, grid.momentum, &grid.force);
 
   // 2. grid momentum update with Cundall's local damping, then the constraints
@@ -164,6 +167,7 @@ void Solver<D>::step_with(double dt) {
     rigid_to_grid<Shape>(dt);
     rigid_contact(mass_floor);
   }
+  clamp_membrane_nodes<D, Shape>(membranes, grid, grid.velocity, params.gimp_half_width);
   grid.constrain(grid.velocity);
 
   // 3. grid -> particles: velocities (and for USL positions and gradients)
@@ -187,15 +191,19 @@ void Solver<D>::step_with(double dt) {
       particles.x[p] += dt * v_pic;
     }
   }
+  membranes_velocities<D, Shape>(membranes, grid, flip, l);
+  if (usl) membranes_move<D, Shape>(membranes, grid, dt, l);
 
   if (!usl) {
     // 4. MUSL: the new particle momenta back to the grid, then the gradient
     to_grid<Shape>(false);
+    membranes_to_grid<D, Shape>(membranes, grid, gravity(), l, false, time);
     grid.fold(grid.mass, grid.momentum, nullptr);
 #pragma omp parallel for schedule(static)
     for (std::int64_t a = 0; a < nodes; ++a)
       grid.velocity_old[a] =
           grid.mass[a] > mass_floor ? (grid.momentum[a] / grid.mass[a]).eval() : Vec::Zero();
+    clamp_membrane_nodes<D, Shape>(membranes, grid, grid.velocity_old, l);
     grid.constrain(grid.velocity_old);
 #pragma omp parallel for schedule(static)
     for (std::int64_t p = 0; p < n; ++p) {
@@ -210,6 +218,7 @@ void Solver<D>::step_with(double dt) {
       particles.velocity_gradient[p] = embed(grad_v);
       particles.x[p] += dt * v_move;
     }
+    membranes_move<D, Shape>(membranes, grid, dt, l);
   }
 
   // 5. volumes and stresses; the rigid bodies move on exactly

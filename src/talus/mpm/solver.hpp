@@ -14,6 +14,7 @@
 
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/materials.hpp"
+#include "talus/mpm/membrane.hpp"
 #include "talus/mpm/particles.hpp"
 #include "talus/mpm/rigid.hpp"
 
@@ -43,6 +44,8 @@ class Solver {
   Particles<D> particles;
   // Boundary particles with prescribed motion, in contact with the material.
   std::vector<RigidBody<D>> rigid_bodies;
+  // Geotextile membranes on the same grid (membrane.hpp, membrane_grid.hpp).
+  std::vector<Membrane<D>> membranes;
   std::vector<Material> materials;
   SolverParams params;
   double time = 0.0;

@@ -1,0 +1,165 @@
+#include "talus/mpm/membrane.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/core/error.hpp"
+
+namespace talus::mpm {
+
+template <int D>
+std::size_t Membrane<D>::carriers() const {
+  if (model == MembraneModel::York) return x.size();
+  if (x.size() < 2) return 0;
+  return closed ? x.size() : x.size() - 1;
+}
+
+template <int D>
+double Membrane<D>::strain(std::size_t k) const {
+  if (model == MembraneModel::York) return stretch[k] - 1.0;
+  const std::size_t b = k + 1 == x.size() ? 0 : k + 1;
+  return (x[b] - x[k]).norm() / rest_length[k] - 1.0;
+}
+
+template <int D>
+double Membrane<D>::max_tension() const {
+  double t = 0.0;
+  for (std::size_t k = 0; k < carriers(); ++k) t = std::max(t, tension(k));
+  return t;
+}
+
+template <int D>
+double Membrane<D>::mean_tension() const {
+  double sum = 0.0, length = 0.0;
+  for (std::size_t k = 0; k < carriers(); ++k) {
+    sum += tension(k) * rest_length[k];
+    length += rest_length[k];
+  }
+  return length > 0.0 ? sum / length : 0.0;
+}
+
+template <int D>
+void Membrane<D>::add_cable_forces(std::vector<Vec>& f) const {
+  for (std::size_t k = 0; k < carriers(); ++k) {
+    const std::size_t b = k + 1 == x.size() ? 0 : k + 1;
+    const Vec d = x[b] - x[k];
+    const double l = d.norm();
+    const double eps = l / rest_length[k] - 1.0;
+    if (eps <= 0.0 || l == 0.0) continue;  // slack: no compression
+    const Vec pull = (stiffness * eps / l) * d;
+    f[k] += pull;
+    f[b] -= pull;
+  }
+}
+
+template <int D>
+void Membrane<D>::update_york_strain(double dt) {
+  for (std::size_t p = 0; p < x.size(); ++p) {
+    // A material line element along t: d(dl)/dt = L dl.
+    const Vec a = tangent[p] + dt * (velocity_gradient[p] * tangent[p]);
+    const double n = a.norm();
+    if (!(n > 0.0)) continue;
+    stretch[p] *= n;
+    tangent[p] = a / n;
+  }
+}
+
+template <int D>
+double Membrane<D>::wave_speed() const {
+  return mass_per_length > 0.0 ? std::sqrt(stiffness / mass_per_length) : 0.0;
+}
+
+template <int D>
+double Membrane<D>::total_mass() const {
+  double m = 0.0;
+  for (double mi : mass) m += mi;
+  return m;
+}
+
+namespace {
+
+template <int D>
+bool in_box(const typename Space<D>::Vec& y, const MembraneParams& p) {
+  for (int d = 0; d < D; ++d)
+    if (y[d] < p.slack_min[d] || y[d] > p.slack_max[d]) return false;
+  return true;
+}
+
+}  // namespace
+
+template <int D>
+Membrane<D> build_membrane(const MembraneParams& p, double cell_size) {
+  using Vec = typename Space<D>::Vec;
+  Membrane<D> m;
+  m.name = p.name;
+  m.model = p.model;
+  m.closed = p.closed;
+  m.stiffness = p.stiffness;
+  m.mass_per_length = p.mass_per_length;
+  const double spacing = p.spacing > 0.0 ? p.spacing : 0.5 * cell_size;
+  std::vector<Vec> corners;
+  for (const Vec3& c : p.points) corners.push_back(Space<D>::from3(c));
+  if (p.closed && corners.size() > 2 && (corners.front() - corners.back()).norm() == 0.0)
+    corners.pop_back();
+  const std::size_t edges = p.closed ? corners.size() : corners.size() - 1;
+  for (std::size_t e = 0; e < edges; ++e) {
+    const Vec a = corners[e], b = corners[(e + 1) % corners.size()];
+    const double length = (b - a).norm();
+    if (length == 0.0)
+      throw InputError(fmt::format("membrane '{}': points {} and {} coincide", p.name, e + 1,
+                                   (e + 1) % corners.size() + 1));
+    const int pieces = std::max(1, static_cast<int>(std::round(length / spacing)));
+    for (int k = 0; k < pieces; ++k) m.x.push_back(a + (b - a) * (static_cast<double>(k) / pieces));
+  }
+  if (!p.closed) m.x.push_back(corners.back());
+  const std::size_t n = m.x.size();
+  const std::size_t cables = p.closed ? n : n - 1;
+  // Rest length of each cable with the slack, and its length as drawn.
+  std::vector<double> rest(cables), drawn(cables);
+  for (std::size_t k = 0; k < cables; ++k) {
+    const Vec& a = m.x[k];
+    const Vec& b = m.x[(k + 1) % n];
+    drawn[k] = (b - a).norm();
+    const bool slack = p.slack > 0.0 && (p.slack_everywhere || in_box<D>(0.5 * (a + b), p));
+    rest[k] = drawn[k] * (slack ? 1.0 + p.slack : 1.0);
+  }
+  // Half of each neighbouring cable belongs to a node.
+  auto half_sum = [&](const std::vector<double>& len, std::size_t i) {
+    double s = 0.0;
+    if (p.closed || i > 0) s += 0.5 * len[(i + cables - 1) % cables];
+    if (p.closed || i + 1 < n) s += 0.5 * len[i % cables];
+    return s;
+  };
+  m.v.assign(n, Space<D>::from3(p.velocity));
+  m.fixed.assign(n, 0);
+  if (!p.closed && (p.fixed == MembraneFixed::First || p.fixed == MembraneFixed::Both))
+    m.fixed.front() = 1;
+  if (!p.closed && (p.fixed == MembraneFixed::Last || p.fixed == MembraneFixed::Both))
+    m.fixed.back() = 1;
+  for (std::size_t i = 0; i < n; ++i) m.mass.push_back(p.mass_per_length * half_sum(rest, i));
+  if (p.model == MembraneModel::FiniteElement) {
+    m.rest_length = rest;
+    return m;
+  }
+  // York: each point stands for half of each neighbouring cable; its stretch
+  // starts below 1 where there is slack.
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = half_sum(rest, i);
+    m.rest_length.push_back(r);
+    m.stretch.push_back(half_sum(drawn, i) / r);
+    const Vec ahead = p.closed || i + 1 < n ? m.x[(i + 1) % n] : m.x[i];
+    const Vec behind = p.closed || i > 0 ? m.x[(i + n - 1) % n] : m.x[i];
+    m.tangent.push_back((ahead - behind).normalized());
+  }
+  m.velocity_gradient.assign(n, Membrane<D>::Mat::Zero());
+  return m;
+}
+
+template struct Membrane<2>;
+template struct Membrane<3>;
+template Membrane<2> build_membrane<2>(const MembraneParams&, double);
+template Membrane<3> build_membrane<3>(const MembraneParams&, double);
+
+}  // namespace talus::mpm

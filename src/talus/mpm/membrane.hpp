@@ -1,0 +1,98 @@
+#pragma once
+// Membranes in MPM (mpm.md "Membranes in MPM"; Hamad et al. 2012/2014): a thin
+// tension-only sheet (a geotextile) that moves with the background grid like
+// the material points and shares its velocity field with the soil (no slip).
+// Two models, chosen by name:
+//  - York et al. (1999): a single line of material points; the stress acts
+//    along the tangent t only, sigma = E eps_tt t (x) t, no compression; the
+//    tangent and the stretch of each point follow the velocity gradient of
+//    the grid, like any material line element (dl = L dl dt).
+//  - The coupled FE membrane (Hamad): a chain of 2-node cables whose nodes move
+//    like material points; each cable's tension comes from its own nodes,
+//    T = J max(eps, 0), eps = l / l0 - 1, J = E t, and the nodal forces are
+//    mapped to the grid.
+// In 2D everything is per metre of depth: J in N/m, mass per length in kg/m
+// per m (kg/m^2), tension T in N/m. The cables are D-generic (a 3D cable is
+// still a line); 3D triangle membranes are not implemented.
+#include <string>
+#include <vector>
+
+#include "talus/core/space.hpp"
+
+namespace talus::mpm {
+
+enum class MembraneModel { FiniteElement, York };
+
+// Which ends of an open membrane are held in place.
+enum class MembraneFixed { None, First, Last, Both };
+
+// A membrane as read from a scenario: a polyline (closed or not) resampled to
+// nodes `spacing` apart along each edge.
+struct MembraneParams {
+  std::string name;
+  MembraneModel model = MembraneModel::FiniteElement;
+  std::vector<Vec3> points;
+  bool closed = false;
+  double spacing = 0.0;          // m along the polyline; <= 0: half a cell
+  double stiffness = 0.0;        // J = E t, N/m
+  double mass_per_length = 0.0;  // kg per m of membrane (per m of depth in 2D)
+  MembraneFixed fixed = MembraneFixed::None;
+  // Slack (folds, Hamad's "extra material at the bag bottom"): the rest length
+  // of the cables whose midpoints lie in the box is (1 + slack) times their
+  // length as drawn, so they carry no tension until stretched by that much.
+  double slack = 0.0;
+  bool slack_everywhere = true;  // else only inside [slack_min, slack_max]
+  Vec3 slack_min = Vec3::Zero(), slack_max = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+};
+
+template <int D>
+struct Membrane {
+  using Vec = typename Space<D>::Vec;
+  using Mat = Eigen::Matrix<double, D, D>;
+
+  std::string name;
+  MembraneModel model = MembraneModel::FiniteElement;
+  bool closed = false;
+  double stiffness = 0.0;        // J, N/m
+  double mass_per_length = 0.0;  // mu, kg/m
+
+  // Nodes (FE) or material points (York).
+  std::vector<Vec> x, v;
+  std::vector<double> mass;
+  std::vector<char> fixed;  // held in place
+  // FE: rest length of cable k, from node k to node k + 1 (mod n if closed).
+  // York: rest length each point stands for (half of each neighbouring cable).
+  std::vector<double> rest_length;
+  // York only: unit tangent, stretch (current / rest length of the point's
+  // line element) and the velocity gradient of the last step.
+  std::vector<Vec> tangent;
+  std::vector<double> stretch;
+  std::vector<Mat> velocity_gradient;
+
+  std::size_t size() const { return x.size(); }
+  // Number of tension carriers: cables (FE) or points (York).
+  std::size_t carriers() const;
+  // Strain and tension J max(eps, 0) of carrier k.
+  double strain(std::size_t k) const;
+  double tension(std::size_t k) const { return stiffness * std::max(strain(k), 0.0); }
+  double max_tension() const;
+  // Mean tension weighted by rest length.
+  double mean_tension() const;
+  // FE: the forces of the cables on their nodes, added to f (size()).
+  void add_cable_forces(std::vector<Vec>& f) const;
+  // York: advances tangent and stretch with the velocity gradient over dt.
+  void update_york_strain(double dt);
+  // Speed of tension waves along the membrane, sqrt(J / mu).
+  double wave_speed() const;
+  double total_mass() const;
+};
+
+// Nodes (FE) or points (York) of a membrane: the polyline resampled to the
+// spacing, rest lengths with the slack, masses from mass_per_length. Throws
+// InputError for a polyline of zero length or a spacing that leaves an edge
+// without a node.
+template <int D>
+Membrane<D> build_membrane(const MembraneParams& p, double cell_size);
+
+}  // namespace talus::mpm

@@ -1,0 +1,39 @@
+#pragma once
+// Output files of MPM membranes (membrane.hpp), written next to the run's
+// other files by MpmOutputs when a run has membranes:
+//  - membranes.csv: time, the largest tension of all membranes, then per
+//    membrane its largest and mean (by rest length) tension, N/m;
+//  - membranes.pvd + .vtu: the nodes (FE) or points (York) with tension,
+//    strain and the membrane's index as "material".
+// Also keeps the peak tension and its time for summary.json.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "talus/io/csv_writer.hpp"
+#include "talus/io/vtk_writer.hpp"
+#include "talus/mpm/membrane.hpp"
+
+namespace talus::mpm {
+
+template <int D>
+class MembraneOutputs {
+ public:
+  MembraneOutputs(const std::filesystem::path& dir, const std::vector<Membrane<D>>& membranes);
+
+  void on_series(double time, const std::vector<Membrane<D>>& membranes);
+  void on_snapshot(double time, const std::vector<Membrane<D>>& membranes);
+  void flush() { series_->flush(); }
+
+  double peak_tension = 0.0, peak_tension_time = 0.0;
+
+ private:
+  std::unique_ptr<io::CsvSeries> series_;
+  std::unique_ptr<io::PvdSeries> points_;
+};
+
+// Tension at each node: the mean of its cables (FE) or its own (York).
+template <int D>
+std::vector<double> node_tensions(const Membrane<D>& m);
+
+}  // namespace talus::mpm
