@@ -89,8 +89,11 @@ TEST(SphereBoxOverlap, KnownFractions) {
               1e-13 * V);
   EXPECT_NEAR(sphere_box_overlap(c, R, c, c + Vec3::Constant(big)), V / 8, 1e-13 * V);
   EXPECT_NEAR(sphere_box_overlap(c, R, c - Vec3::Constant(big), c), V / 8, 1e-13 * V);
-  // Disjoint: nothing.
-  EXPECT_EQ(sphere_box_overlap(c, R, c + Vec3(R, -big, -big), c + Vec3::Constant(big)), 0.0);
+  // Disjoint: nothing; touching: nothing up to the round-off of c + R - c in the coordinates.
+  EXPECT_EQ(sphere_box_overlap(c, R, c + Vec3(1.01 * R, -big, -big), c + Vec3::Constant(big)),
+            0.0);
+  EXPECT_NEAR(sphere_box_overlap(c, R, c + Vec3(R, -big, -big), c + Vec3::Constant(big)), 0.0,
+              1e-15 * V);
 }
 
 TEST(SphereBoxOverlap, CapsAndLenses) {
