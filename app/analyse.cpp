@@ -127,13 +127,19 @@ int coarse_grain_command(const CoarseGrainOptions& o) {
   analysis::CellGrid column;  // the column around the axis as one cell
   column.lo = Vec3(centre.x() - 0.5 * o.axis_width, centre.y() - 0.5 * o.axis_width, grid.lo.z());
   column.hi = Vec3(centre.x() + 0.5 * o.axis_width, centre.y() + 0.5 * o.axis_width, grid.hi.z());
-  analysis::CoarseGrainer field(grid), axis(column);
+  // The column's lower and upper halves: symmetric four-cell convection moves the axis
+  // material towards the nearer end (v_z < 0 below, > 0 above), one-directional flow does not.
+  analysis::CellGrid lower = column, upper = column;
+  lower.hi.z() = upper.lo.z() = centre.z();
+  analysis::CoarseGrainer field(grid), axis(column), axis_lower(lower), axis_upper(upper);
   double diameter = 0.0;
   for (const auto& [a, b] : pairs) {
     const auto& first = sample(a);
     const auto& second = sample(b);
     const int matched = field.add_interval(first, second);
     axis.add_interval(first, second);
+    axis_lower.add_interval(first, second);
+    axis_upper.add_interval(first, second);
     if (!o.quiet)
       fmt::print(stderr, "  interval {:.4f} - {:.4f} s: {} grains\n", first.time, second.time,
                  matched);
@@ -180,6 +186,8 @@ int coarse_grain_command(const CoarseGrainOptions& o) {
   j["axis_velocity"] = {v_axis.x(), v_axis.y(), v_axis.z()};
   // Götz reports convection speeds as v / (f d_mean).
   j["axis_vz_normalised"] = v_axis.z() / (frequency * diameter);
+  j["axis_lower_vz_normalised"] = axis_lower.mean().velocity().front().z() / (frequency * diameter);
+  j["axis_upper_vz_normalised"] = axis_upper.mean().velocity().front().z() / (frequency * diameter);
   j["max_speed"] = v_max;
   j["max_speed_normalised"] = v_max / (frequency * diameter);
   std::ofstream(out / "coarse_grain.json") << j.dump(2) << "\n";

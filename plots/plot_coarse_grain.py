@@ -60,7 +60,9 @@ def main():
     vz_axis = meta["axis_vz_normalised"]
     fig.suptitle(f"{title}\n{meta['intervals']} periods from t = {meta['first_time']:.3f} s; "
                  f"axis column v_z = {vz_axis:+.3f} f d, max |v| = "
-                 f"{meta['max_speed_normalised']:.3f} f d", fontsize=10)
+                 f"{meta['max_speed_normalised']:.3f} f d\naxis column lower half "
+                 f"{meta['axis_lower_vz_normalised']:+.3f} f d, upper half "
+                 f"{meta['axis_upper_vz_normalised']:+.3f} f d", fontsize=10)
     path = os.path.join(cg, "velocity_rz.png")
     fig.savefig(path, dpi=110)
     print(path)
