@@ -170,8 +170,14 @@ int coarse_grain_command(const CoarseGrainOptions& o) {
 
   const Vec3 v_axis = axis.mean().velocity().front();
   const double frequency = 1.0 / o.period;
-  double v_max = 0.0;
-  for (const Vec3& v : mean.velocity()) v_max = std::max(v_max, v.norm());
+  double v_max = 0.0, mass = 0.0, mass_speed = 0.0;  // strength: mass-weighted mean |v|
+  const auto velocity = mean.velocity();
+  for (std::size_t a = 0; a < velocity.size(); ++a) {
+    v_max = std::max(v_max, velocity[a].norm());
+    mass += mean.mass_density[a];
+    mass_speed += mean.mass_density[a] * velocity[a].norm();
+  }
+  const double v_mean = mass > 0 ? mass_speed / mass : 0.0;
   nlohmann::json j;
   j["run"] = fs::absolute(run).string();
   j["period"] = o.period;
@@ -190,6 +196,8 @@ int coarse_grain_command(const CoarseGrainOptions& o) {
   j["axis_upper_vz_normalised"] = axis_upper.mean().velocity().front().z() / (frequency * diameter);
   j["max_speed"] = v_max;
   j["max_speed_normalised"] = v_max / (frequency * diameter);
+  j["mean_speed"] = v_mean;
+  j["mean_speed_normalised"] = v_mean / (frequency * diameter);
   std::ofstream(out / "coarse_grain.json") << j.dump(2) << "\n";
   if (!o.quiet)
     fmt::print(stderr,

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Velocity field of `talus analyse coarse-grain` (Götz 2024 ch. 6, Fig. 42c style).
 
-Usage: plot_coarse_grain.py CG_DIR [TITLE]   (CG_DIR holds rz.csv, field.csv, coarse_grain.json)
+Usage: plot_coarse_grain.py CG_DIR [TITLE] [VMAX]
+(CG_DIR holds rz.csv, field.csv, coarse_grain.json; VMAX, in units of f d, fixes the colour and
+arrow scale so that several runs compare; default: the largest speed of this field)
 Writes CG_DIR/velocity_rz.png: (left) the azimuthal average in the r-z plane, drawn on both
 sides of the axis as in a cut through it, (right) the x-z cut through the axis (middle y
 layer of cells). Arrows: mean velocity over one period, relative to f d_mean; colour: solid
@@ -46,6 +48,8 @@ def main():
          f["vz"][cut] * scale, f["solid_fraction"][cut], f"x [mm] (cut y = {yj * 1e3:.2f} mm)"),
     ]
     vmax = max(np.max(np.hypot(p[3], p[4])) for p in panels) or 1.0
+    if len(sys.argv) > 3:
+        vmax = float(sys.argv[3])
     cell = np.min(np.diff(np.unique(f["x"]))) * 1e3 if nx > 1 else 1.0
     for ax, x, zz, u, w, c, label in panels:
         sc = ax.scatter(x, zz, c=c, s=70, marker="s", cmap="Greys", vmin=0, vmax=1.2, alpha=0.6)
@@ -60,7 +64,8 @@ def main():
     vz_axis = meta["axis_vz_normalised"]
     fig.suptitle(f"{title}\n{meta['intervals']} periods from t = {meta['first_time']:.3f} s; "
                  f"axis column v_z = {vz_axis:+.3f} f d, max |v| = "
-                 f"{meta['max_speed_normalised']:.3f} f d\naxis column lower half "
+                 f"{meta['max_speed_normalised']:.3f} f d, mass-weighted mean |v| = "
+                 f"{meta['mean_speed_normalised']:.3f} f d\naxis column lower half "
                  f"{meta['axis_lower_vz_normalised']:+.3f} f d, upper half "
                  f"{meta['axis_upper_vz_normalised']:+.3f} f d", fontsize=10)
     path = os.path.join(cg, "velocity_rz.png")
