@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "analyse.hpp"
 #include "calibrate.hpp"
 #include "compare.hpp"
 #include "commands.hpp"
@@ -64,6 +65,24 @@ int main(int argc, char** argv) {
   cal_cmd->add_flag("--force", cal.force, "write into an existing output folder");
   cal_cmd->add_flag("--quiet,-q", cal.quiet, "no progress on stderr");
 
+  CoarseGrainOptions cg;
+  auto* ana_cmd = cli.add_subcommand("analyse", "analyses of a finished run's output folder");
+  ana_cmd->require_subcommand(1);
+  auto* cg_cmd = ana_cmd->add_subcommand(
+      "coarse-grain", "coarse-grained density and velocity fields over one period (Goetz app. C)");
+  cg_cmd->add_option("run", cg.run_dir, "output folder of a DEM run")->required();
+  cg_cmd->add_option("--cells", cg.cells, "grid cells NX,NY,NZ")->required()->delimiter(',');
+  cg_cmd->add_option("--period", cg.period, "interval between the two snapshots of a velocity, s")
+      ->required();
+  cg_cmd->add_option("--from", cg.from, "first interval starts at this time, s (default 0)");
+  cg_cmd->add_option("--to", cg.to, "last interval ends by this time, s (default: the end)");
+  cg_cmd->add_option("--box", cg.box, "grid box xmin,ymin,zmin,xmax,ymax,zmax (default: grains)")
+      ->delimiter(',');
+  cg_cmd->add_option("--axis-width", cg.axis_width, "side of the column around the axis, m");
+  cg_cmd->add_option("--out,-o", cg.out, "output folder (default: RUN/coarse_grain)");
+  cg_cmd->add_flag("--plot", cg.plot, "draw the r-z velocity field (plots/plot_coarse_grain.py)");
+  cg_cmd->add_flag("--quiet,-q", cg.quiet, "no progress on stderr");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -76,6 +95,7 @@ int main(int argc, char** argv) {
     if (list_cmd->parsed()) return list_command();
     if (cal_cmd->parsed()) return calibrate_command(cal);
     if (cmp_cmd->parsed()) return compare_command(cmp);
+    if (cg_cmd->parsed()) return coarse_grain_command(cg);
   } catch (const talus::InputError& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 2;
