@@ -18,11 +18,17 @@ namespace talus::mpm {
 template <int D>
 class MpmOutputs final : public MpmObserver<D> {
  public:
-  // initial_cohesion: c0 per material, for c/c0.
-  MpmOutputs(std::filesystem::path dir, std::vector<double> initial_cohesion);
+  // initial_cohesion: c0 per material, for c/c0. resume = true continues the
+  // files of a run interrupted after its checkpoint at resume_time (dropping
+  // what was written later) and takes the headline values seen so far from
+  // series.csv, so that the summary covers the whole run.
+  MpmOutputs(std::filesystem::path dir, std::vector<double> initial_cohesion, bool resume = false,
+             double resume_time = 0.0);
 
   void on_series(const Solver<D>& s) override;
   void on_snapshot(const Solver<D>& s) override;
+  // Flushes the series, then writes checkpoint.bin.
+  void on_checkpoint(const Solver<D>& s) override;
   void on_progress(double time, double end, double steps_per_s) override;
 
   std::function<void(double, double, double)> progress;  // set by the app
@@ -30,6 +36,10 @@ class MpmOutputs final : public MpmObserver<D> {
   // Headline values seen in the series, for the summary.
   double peak_kinetic_energy = 0.0, peak_kinetic_energy_time = 0.0;
   double initial_front_x = 0.0, initial_top = 0.0;
+
+  static std::filesystem::path checkpoint_path(const std::filesystem::path& dir) {
+    return dir / "checkpoint.bin";
+  }
 
  private:
   double c_ratio(const Solver<D>& s, std::size_t p) const;
@@ -40,6 +50,8 @@ class MpmOutputs final : public MpmObserver<D> {
   std::unique_ptr<io::PvdSeries> particles_;
   std::unique_ptr<io::PvdSeries> boundary_;  // boundary particles of rigid bodies, if any
   bool first_ = true;
+  bool resume_ = false;
+  double resume_time_ = 0.0;
 };
 
 }  // namespace talus::mpm
