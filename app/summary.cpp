@@ -155,6 +155,7 @@ void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& s,
                   {"top_change_m", height - outputs.initial_top},
                   {"yielding_points", yielding},
                   {"cracked_points", cracked}};
+  for (const auto& [name, value] : summary.analysis.items()) j[name] = value;
   write_summary_file(j, summary, error);
 }
 
