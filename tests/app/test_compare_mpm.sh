@@ -43,12 +43,13 @@ check_rc "report matches the MPM summary; front on the barrier at the lab's arri
 /usr/bin/python3 "$src/plots/plot_compare.py" "$tmp/cmp" >"$tmp/plots" 2>&1; rc=$?
 check "plots drawn with the MPM" '[ $rc -eq 0 ] && [ -s "$tmp/cmp/plots/compare_front.png" ] && [ -s "$tmp/cmp/compare/surface_mpm.csv" ]'
 
+root=$(cd "$src" && pwd)  # the comparison file lives in $tmp: absolute paths
 cat >"$tmp/noflume.toml" <<TOML
 method = "compare"
 name = "no_flume"
 [methods]
-mpm = "$data/mpm_resume.toml"
-dan = "$src/scenarios/runout_flume_A.toml"
+mpm = "$root/tests/data/scenarios/mpm_resume.toml"
+dan = "$root/scenarios/runout_flume_A.toml"
 TOML
 "$talus" compare "$tmp/noflume.toml" --out "$tmp/nf" >"$tmp/out" 2>&1; rc=$?
 check "MPM scenario without [flume] refused before running (exit 2)" '[ $rc -eq 2 ] && grep -q "needs a \[flume\]" "$tmp/out" && [ ! -e "$tmp/nf" ]'
