@@ -23,6 +23,8 @@
 #include "talus/io/scenario.hpp"
 #include "talus/io/scenario_mpm.hpp"
 #include "talus/io/scenario_runout.hpp"
+#include "talus/mpm/checkpoint.hpp"
+#include "talus/mpm/flume_observer.hpp"
 #include "talus/mpm/output_observer.hpp"
 #include "talus/mpm/scenario.hpp"
 #include "talus/runout/builder.hpp"
@@ -189,12 +191,14 @@ int run_runout_scenario(const io::ScenarioFile& file, const RunOptions& opt) {
 template <int D>
 int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunOptions& opt) {
   const auto t_setup = std::chrono::steady_clock::now();
+  const bool resume = !opt.resume.empty();
   auto solver = mpm::build_mpm<D>(sc);
+  if (resume) mpm::load_checkpoint(solver, mpm::MpmOutputs<D>::checkpoint_path(out));
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_setup).count();
   std::vector<double> c0;
   for (const auto& m : sc.materials) c0.push_back(mpm::initial_cohesion(m));
-  mpm::MpmOutputs<D> outputs(out, c0);
+  mpm::MpmOutputs<D> outputs(out, c0, resume, solver.time);
   if (!opt.quiet && isatty(STDERR_FILENO))
     outputs.progress = [&solver](double t, double e, double sps) {
       progress_line(t, e, sps, solver.last_dt > 0 ? solver.last_dt : 1.0);
@@ -204,13 +208,24 @@ int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunO
   control.series_interval =
       sc.output.series_interval > 0 ? sc.output.series_interval : sc.duration / 200.0;
   control.snapshot_interval = sc.output.snapshots ? sc.output.snapshot_interval : -1.0;
+  control.checkpoint_interval = sc.output.checkpoint_interval;
   RunSummary summary;
   summary.output = out;
   summary.setup_seconds = setup_s;
+  std::vector<mpm::MpmObserver<D>*> observers = {&outputs};
+  std::unique_ptr<mpm::MpmFlumeObserver> flume;
+  if constexpr (D == 2) {
+    if (sc.flume) {
+      flume = std::make_unique<mpm::MpmFlumeObserver>(out, *sc.flume, solver, resume, solver.time);
+      observers.push_back(flume.get());
+    }
+  }
   try {
-    const auto stats = mpm::run_mpm<D>(solver, control, {&outputs});
+    const auto stats = mpm::run_mpm<D>(solver, control, observers, !resume);
     summary.steps = stats.steps;
     summary.loop_seconds = stats.wall_seconds;
+    if constexpr (D == 2)
+      if (flume) summary.analysis["flume"] = flume->finish(solver);
     write_mpm_summary<D>(sc, solver, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     summary.steps = solver.steps;
@@ -224,13 +239,18 @@ int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunO
 }
 
 int run_mpm_command(const io::ScenarioFile& file, const RunOptions& opt) {
-  if (!opt.resume.empty())
-    throw InputError(opt.resume + ": resuming is not available for MPM runs yet");
-  const auto sc = io::parse_mpm_scenario(file);
-  const fs::path out =
-      opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name) : fs::path(opt.out);
-  prepare_output(out, opt.force);
-  std::ofstream(out / "scenario.toml") << io::mpm_scenario_to_toml(sc);
+  auto sc = io::parse_mpm_scenario(file);
+  fs::path out = opt.resume;
+  if (opt.resume.empty()) {
+    out = opt.out.empty() ? fs::path("runs") / (sc.name.empty() ? "run" : sc.name)
+                          : fs::path(opt.out);
+    prepare_output(out, opt.force);
+    std::ofstream(out / "scenario.toml") << io::mpm_scenario_to_toml(sc);
+    // The run uses the resolved file it wrote, as a resume does: an angle
+    // through degrees and back may differ in the last bit, and a resumed run
+    // must start from the very same numbers to end in the same state.
+    sc = io::parse_mpm_scenario(io::load_scenario_file((out / "scenario.toml").string(), {}));
+  }
   return sc.dimension == 2 ? run_mpm_scenario<2>(sc, out, opt) : run_mpm_scenario<3>(sc, out, opt);
 }
 

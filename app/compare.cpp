@@ -19,6 +19,7 @@
 #include "talus/io/csv_reader.hpp"
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/scenario.hpp"
+#include "talus/io/scenario_mpm.hpp"
 #include "talus/io/scenario_runout.hpp"
 
 namespace fs = std::filesystem;
@@ -44,6 +45,14 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
                        "[path] of type \"flume\"");
     return runout::flume_of(sc.path);
   }
+  if (method == "mpm") {
+    const auto sc = io::parse_mpm_scenario(file);
+    if (!sc.flume || sc.flume->release_material_index < 0)
+      throw InputError(path +
+                       ": the MPM scenario of a comparison needs a [flume] with a "
+                       "[flume.release]");
+    return mpm::flume_geometry(*sc.flume);
+  }
   throw InputError(
       fmt::format("{}: method '{}' cannot take part in a flume comparison yet", path, method));
 }
@@ -67,6 +76,8 @@ nlohmann::json load_json(const fs::path& p) {
 
 double number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : NAN; }
 
+// A DEM run's flume block, or an MPM run's (the MPM flume analysis writes the
+// same keys and files, mpm/flume_observer.hpp).
 Result read_dem(const fs::path& dir) {
   const auto f = load_json(dir / "summary.json").at("flume");
   Result r;
@@ -157,7 +168,7 @@ int compare_command(const CompareOptions& opt) {
     run.threads = opt.threads;
     run.quiet = true;
     run_command(run);
-    results.push_back(m == "dem" ? read_dem(out / m) : read_dan(out / m));
+    results.push_back(m == "dan" ? read_dan(out / m) : read_dem(out / m));
   }
 
   fs::create_directories(out / "compare");
@@ -175,7 +186,8 @@ int compare_command(const CompareOptions& opt) {
   std::string md = fmt::format(
       "# {}: {}\n\nFlume beta = {:.1f} deg, R = {} m; s along the path from the gate foot "
       "(the barrier starts at s = {:.3f} m). Tails: DEM where the deposit is thicker than 3 grain "
-      "diameters, DAN at the first block with 10 % of the deepest depth.\n\n"
+      "diameters, MPM 3 point spacings, DAN at the first block with 10 % of the deepest "
+      "depth.\n\n"
       "| method | arrival at barrier [s] | final front s [m] | run-up along barrier [m] | "
       "run-up elevation [m] | deposit tail s [m] |\n|---|---|---|---|---|---|\n",
       file.name, file.description, rad2deg(g.beta), g.radius, g.arc_end_s());

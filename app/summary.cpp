@@ -162,6 +162,7 @@ void write_mpm_summary(const mpm::MpmScenario& sc, const mpm::Solver<D>& s,
     j["metrics"]["membrane_peak_tension_time_s"] = m->peak_tension_time;
     j["metrics"]["membrane_final_max_tension_N_m"] = final_max;
   }
+  for (const auto& [name, value] : summary.analysis.items()) j[name] = value;
   write_summary_file(j, summary, error);
 }
 

@@ -5,6 +5,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_mpm.hpp"
+#include "talus/mpm/scenario.hpp"
 
 namespace talus::io {
 namespace {
@@ -120,6 +121,81 @@ TEST(MpmScenario, BundledColumnBuilds) {
   const auto solver = mpm::build_mpm<2>(sc);
   // 8 cells x 2 points across 91 mm, 56 cells x 2 up 634 mm (rounded).
   EXPECT_EQ(solver.particles.size(), 16u * 111u);
+}
+
+// The transfer, smoothing and checkpoint keys, and the [flume] of an MPM
+// scenario: parsed, round-tripped through the resolved file, bad
+// combinations refused with the key named.
+TEST(MpmScenario, TransferSmoothingCheckpointKeys) {
+  const auto text =
+      edit(kBase, "shape = \"cubic_bspline\"",
+           "shape = \"cubic_bspline\"\ntransfer = \"apic\"\nvolumetric_smoothing = true") +
+      "[output]\ncheckpoint_interval = 0.1\n";
+  const auto sc = parse_mpm_scenario(load_scenario_text(text, "apic.toml"));
+  EXPECT_EQ(sc.solver.transfer, mpm::Transfer::Apic);
+  EXPECT_TRUE(sc.solver.volumetric_smoothing);
+  EXPECT_EQ(sc.output.checkpoint_interval, 0.1);
+  const auto again =
+      parse_mpm_scenario(load_scenario_text(mpm_scenario_to_toml(sc), "resolved.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
+  // APIC needs a stencil whose inertia tensor is invertible; flip is the blend's key.
+  expect_error(edit(text, "shape = \"cubic_bspline\"", "shape = \"linear\""), "'transfer'");
+  expect_error(edit(text, "transfer = \"apic\"", "transfer = \"apic\"\nflip = 0.9"), "'flip'");
+  expect_error(edit(text, "checkpoint_interval = 0.1", "checkpoint_interval = -1"),
+               "'checkpoint_interval'");
+}
+
+const std::string kFlume = R"(method = "mpm"
+[run]
+dimension = 2
+duration = 1.0
+[grid]
+min = [-0.05, 0]
+max = [2.6, 1.3]
+cell_size = 0.02
+boundaries = { x_min = "free", x_max = "free", y_min = "free", y_max = "free" }
+[[materials]]
+name = "sand"
+model = "mohr_coulomb"
+density = 1630
+youngs_modulus = 1e6
+poisson_ratio = 0.3
+friction_angle = 30.9
+[flume]
+beta = 33
+arc_radius = 0.10
+wall_friction = 21.7
+release = { material = "sand" }
+)";
+
+TEST(MpmScenario, FlumeParsesRoundTripsAndBuilds) {
+  const auto sc = parse_mpm_scenario(load_scenario_text(kFlume, "flume.toml"));
+  ASSERT_TRUE(sc.flume.has_value());
+  EXPECT_NEAR(sc.flume->wall_friction, 21.7 * M_PI / 180.0, 1e-15);
+  EXPECT_EQ(sc.flume->release_material_index, 0);
+  EXPECT_TRUE(sc.bodies.empty());  // the release fills the triangle instead
+  // Kuen's Table 2 row for 33 deg, R = 0.10 (flume.hpp) is resolved into the file.
+  EXPECT_GT(*sc.flume->l_star, 1.0);
+  const auto again =
+      parse_mpm_scenario(load_scenario_text(mpm_scenario_to_toml(sc), "resolved.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
+  const auto solver = mpm::build_mpm<2>(sc);
+  ASSERT_EQ(solver.rigid_bodies.size(), 1u);  // the bed
+  EXPECT_NEAR(solver.rigid_bodies[0].friction, std::tan(21.7 * M_PI / 180.0), 1e-15);
+  // Release area (flume.hpp) over the point area (10 mm spacing), within the
+  // lattice cells the triangle's edges cut.
+  const auto g = mpm::flume_geometry(*sc.flume);
+  EXPECT_NEAR(solver.particles.size() * 1e-4, g.release_area(), 3.0 * 0.01);
+
+  expect_error(edit(kFlume, "release = { material = \"sand\" }", ""), "'bodies'");
+  expect_error(
+      edit(kFlume, "release = { material = \"sand\" }", "release = { material = \"mud\" }"),
+      "'material'");
+  expect_error(edit(kFlume, "wall_friction = 21.7", "wall_friction = 95"), "'wall_friction'");
+  // A grid that does not hold the bed is refused when the solver is built.
+  const auto small = parse_mpm_scenario(
+      load_scenario_text(edit(kFlume, "max = [2.6, 1.3]", "max = [2.0, 1.3]"), "small.toml"));
+  EXPECT_THROW(mpm::build_mpm<2>(small), InputError);
 }
 
 }  // namespace

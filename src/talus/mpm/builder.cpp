@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
+#include "talus/mpm/flume.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
@@ -40,7 +41,41 @@ std::vector<typename Space<D>::Vec> fill_box(const typename Space<D>::Vec& lo,
   return points;
 }
 
+// The flume's bed and release points (2D only; the parser refuses 3D).
+template <int D>
+void add_flume(Solver<D>& solver, const MpmScenario& sc) {
+  if constexpr (D == 2) {
+    const MpmFlumeParams& f = *sc.flume;
+    const auto g = flume_geometry(f);
+    const double h = sc.grid.cell_size;
+    const int per_cell = f.release_material_index >= 0 ? f.release_per_cell : 2;
+    solver.rigid_bodies.push_back(
+        flume_bed(g, h / per_cell, f.wall_layers, std::tan(f.wall_friction)));
+    for (const Vec2& y : solver.rigid_bodies.back().x)
+      if (y.x() < sc.grid.lo.x() || y.x() > sc.grid.hi.x() || y.y() < sc.grid.lo.y() ||
+          y.y() > sc.grid.hi.y())
+        throw InputError(fmt::format(
+            "[flume]: the bed (and {} rows of boundary particles below it) leaves the [grid]; it "
+            "spans x in [{:.3f}, {:.3f}] m, y in [{:.3f}, {:.3f}] m",
+            f.wall_layers, g.chute_start.x(), g.barrier_end.x(), g.arc_centre.y() - g.radius,
+            std::max(g.chute_start.y(), g.barrier_end.y())));
+    if (f.release_material_index < 0) return;
+    const MaterialParams& mat = sc.materials[f.release_material_index];
+    const double dx = h / f.release_per_cell;
+    const Vec2 origin(sc.grid.lo.x(), sc.grid.lo.y());
+    MaterialState state;
+    state.cohesion = initial_cohesion(mat);
+    for (const Vec2& x : fill_triangle(g.release[0], g.release[1], g.release[2], dx, origin))
+      solver.particles.add(x, Vec2::Zero(), mat.density * dx * dx, dx * dx,
+                           f.release_material_index, state);
+  }
+}
+
 }  // namespace
+
+geometry::FlumeGeometry flume_geometry(const MpmFlumeParams& f) {
+  return geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+}
 
 template <int D>
 RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size) {
@@ -92,6 +127,8 @@ Solver<D> build_mpm(const MpmScenario& sc) {
   SolverParams params = sc.solver;
   int per_cell = 0;
   for (const auto& b : sc.bodies) per_cell = std::max(per_cell, b.per_cell);
+  if (sc.flume && sc.flume->release_material_index >= 0)
+    per_cell = std::max(per_cell, sc.flume->release_per_cell);
   if (per_cell > 0) params.gimp_half_width = 0.5 / per_cell;
   Solver<D> solver(std::move(grid), std::move(materials), params);
 
@@ -155,6 +192,7 @@ Solver<D> build_mpm(const MpmScenario& sc) {
               "[[rigid_bodies]] #{}: boundary particles lie outside the [grid]", b + 1));
   }
   for (const auto& m : sc.membranes) solver.membranes.push_back(build_membrane<D>(m, h));
+  if (sc.flume) add_flume<D>(solver, sc);
   return solver;
 }
 

@@ -23,13 +23,16 @@ double top(const Particles<D>& p, const typename Space<D>::Vec& gravity) {
 }
 
 template <int D>
-MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmObserver<D>*>& obs) {
+MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmObserver<D>*>& obs,
+                    bool fresh) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   auto last_progress = t0;
-  for (auto* o : obs) o->on_series(s);
-  if (c.snapshot_interval >= 0.0)
-    for (auto* o : obs) o->on_snapshot(s);
+  if (fresh) {
+    for (auto* o : obs) o->on_series(s);
+    if (c.snapshot_interval >= 0.0)
+      for (auto* o : obs) o->on_snapshot(s);
+  }
   const std::int64_t start = s.steps;
   // Next output times are counted in intervals from t = 0, so rounding of the
   // variable step never accumulates.
@@ -38,6 +41,7 @@ MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmO
   };
   double next_series = next_after(c.series_interval);
   double next_snapshot = next_after(c.snapshot_interval);
+  double next_checkpoint = next_after(c.checkpoint_interval);
   while (s.time < c.duration * (1.0 - 1e-12)) {
     double dt = s.time_step();
     // Land exactly on the end time.
@@ -52,6 +56,11 @@ MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmO
         (last || (c.snapshot_interval > 0.0 && s.time >= next_snapshot))) {
       for (auto* o : obs) o->on_snapshot(s);
       next_snapshot = next_after(c.snapshot_interval);
+    }
+    // After the outputs of this time, so that a resumed run keeps them.
+    if (c.checkpoint_interval > 0.0 && !last && s.time >= next_checkpoint) {
+      for (auto* o : obs) o->on_checkpoint(s);
+      next_checkpoint = next_after(c.checkpoint_interval);
     }
     const auto now = clock::now();
     if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_seconds || last) {
@@ -68,9 +77,9 @@ MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmO
 }
 
 template MpmRunStats run_mpm<2>(Solver<2>&, const MpmRunControl&,
-                                const std::vector<MpmObserver<2>*>&);
+                                const std::vector<MpmObserver<2>*>&, bool);
 template MpmRunStats run_mpm<3>(Solver<3>&, const MpmRunControl&,
-                                const std::vector<MpmObserver<3>*>&);
+                                const std::vector<MpmObserver<3>*>&, bool);
 template double front_x<2>(const Particles<2>&);
 template double front_x<3>(const Particles<3>&);
 template double top<2>(const Particles<2>&, const Space<2>::Vec&);

@@ -16,13 +16,15 @@ class MpmObserver {
   virtual ~MpmObserver() = default;
   virtual void on_series(const Solver<D>&) {}
   virtual void on_snapshot(const Solver<D>&) {}
+  virtual void on_checkpoint(const Solver<D>&) {}
   virtual void on_progress(double /*time*/, double /*end*/, double /*steps_per_s*/) {}
 };
 
 struct MpmRunControl {
   double duration = 0.0;
-  double series_interval = 0.0;    // 0: every step
-  double snapshot_interval = 0.0;  // 0: first and last only; < 0: none
+  double series_interval = 0.0;      // 0: every step
+  double snapshot_interval = 0.0;    // 0: first and last only; < 0: none
+  double checkpoint_interval = 0.0;  // 0: none (never at the end: the run is complete)
   double progress_seconds = 1.0;
 };
 
@@ -31,9 +33,11 @@ struct MpmRunStats {
   double wall_seconds = 0.0;
 };
 
+// fresh = false continues a run restored from a checkpoint: no outputs at its
+// start time (the interrupted run wrote them).
 template <int D>
 MpmRunStats run_mpm(Solver<D>& solver, const MpmRunControl& control,
-                    const std::vector<MpmObserver<D>*>& observers);
+                    const std::vector<MpmObserver<D>*>& observers, bool fresh = true);
 
 // Metrics of the point cloud: the furthest point along +x (with half a point
 // spacing added by the caller if wanted) and the highest point along -gravity.

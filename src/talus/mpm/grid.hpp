@@ -76,19 +76,23 @@ struct Stencil {
   std::array<std::int64_t, count> node;
   std::array<double, count> w;
   std::array<Vec, count> grad;
+  std::array<Vec, count> dx;  // node position minus particle position (APIC)
 
   // half_width: particle half-width over h (GIMP). Returns false when the
   // stencil would leave the grid (the particle left the domain).
   bool compute(const Grid<D>& g, const Vec& x, double half_width) {
     constexpr int S = Shape::support;
     std::array<int, D> first;
-    std::array<std::array<double, S>, D> w1, dw1;
+    std::array<std::array<double, S>, D> w1, dw1, off;
     for (int d = 0; d < D; ++d) {
       const double xn = (x[d] - g.origin[d]) / g.h;
       if (!(xn >= 0.0) || xn >= g.n[d]) return false;
       first[d] = Shape::first(xn);
       if (first[d] < 0 || first[d] + S > g.n[d]) return false;
-      for (int k = 0; k < S; ++k) Shape::eval(xn - (first[d] + k), half_width, w1[d][k], dw1[d][k]);
+      for (int k = 0; k < S; ++k) {
+        Shape::eval(xn - (first[d] + k), half_width, w1[d][k], dw1[d][k]);
+        off[d][k] = (first[d] + k - xn) * g.h;
+      }
     }
     const double inv_h = 1.0 / g.h;
     int c = 0;
@@ -98,6 +102,7 @@ struct Stencil {
           node[c] = g.index({first[0] + i, first[1] + j});
           w[c] = w1[0][i] * w1[1][j];
           grad[c] = Vec(dw1[0][i] * w1[1][j], w1[0][i] * dw1[1][j]) * inv_h;
+          dx[c] = Vec(off[0][i], off[1][j]);
         }
     } else {
       for (int k = 0; k < S; ++k)
@@ -108,6 +113,7 @@ struct Stencil {
             grad[c] = Vec(dw1[0][i] * w1[1][j] * w1[2][k], w1[0][i] * dw1[1][j] * w1[2][k],
                           w1[0][i] * w1[1][j] * dw1[2][k]) *
                       inv_h;
+            dx[c] = Vec(off[0][i], off[1][j], off[2][k]);
           }
     }
     return true;

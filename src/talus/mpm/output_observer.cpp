@@ -2,19 +2,43 @@
 
 #include <cmath>
 
+#include "talus/io/csv_reader.hpp"
+#include "talus/mpm/checkpoint.hpp"
+
 namespace talus::mpm {
 
 template <int D>
-MpmOutputs<D>::MpmOutputs(std::filesystem::path dir, std::vector<double> c0)
-    : dir_(std::move(dir)), c0_(std::move(c0)) {
+MpmOutputs<D>::MpmOutputs(std::filesystem::path dir, std::vector<double> c0, bool resume,
+                          double resume_time)
+    : dir_(std::move(dir)), c0_(std::move(c0)), resume_(resume), resume_time_(resume_time) {
   std::filesystem::create_directories(dir_);
+  const auto csv = dir_ / "series.csv";
+  if (resume) {
+    io::CsvSeries::truncate_after(csv, resume_time);
+    // The values the interrupted run saw, in the order it saw them.
+    const auto table = io::read_csv(csv);
+    const std::size_t t = table.column("time"), ke = table.column("kinetic_energy"),
+                      fx = table.column("front_x"), tp = table.column("top");
+    for (const auto& row : table.rows) {
+      if (first_) initial_front_x = row[fx], initial_top = row[tp], first_ = false;
+      if (row[ke] > peak_kinetic_energy)
+        peak_kinetic_energy = row[ke], peak_kinetic_energy_time = row[t];
+    }
+  }
   series_ = std::make_unique<io::CsvSeries>(
-      dir_ / "series.csv",
+      csv,
       std::vector<std::string>{"time", "step", "time_step", "points", "kinetic_energy",
                                "potential_energy", "front_x", "top", "max_speed", "yielding_points",
                                "cracked_points", "min_c_over_c0"},
-      false);
-  particles_ = std::make_unique<io::PvdSeries>(dir_, "particles", false);
+      resume);
+  particles_ = std::make_unique<io::PvdSeries>(dir_, "particles", resume);
+  if (resume) particles_->truncate_after(resume_time);
+}
+
+template <int D>
+void MpmOutputs<D>::on_checkpoint(const Solver<D>& s) {
+  series_->flush();
+  save_checkpoint(s, checkpoint_path(dir_));
 }
 
 template <int D>
@@ -94,7 +118,10 @@ void MpmOutputs<D>::on_snapshot(const Solver<D>& s) {
   particles_->add(s.time, f);
   if (auto* m = membranes(s)) m->on_snapshot(s.time, s.membranes);
   if (s.rigid_bodies.empty()) return;
-  if (!boundary_) boundary_ = std::make_unique<io::PvdSeries>(dir_, "boundary", false);
+  if (!boundary_) {
+    boundary_ = std::make_unique<io::PvdSeries>(dir_, "boundary", resume_);
+    if (resume_) boundary_->truncate_after(resume_time_);
+  }
   io::ParticleFrame b;
   for (std::size_t r = 0; r < s.rigid_bodies.size(); ++r) {
     const auto& body = s.rigid_bodies[r];

@@ -19,11 +19,17 @@ namespace talus::mpm {
 template <int D>
 class MpmOutputs final : public MpmObserver<D> {
  public:
-  // initial_cohesion: c0 per material, for c/c0.
-  MpmOutputs(std::filesystem::path dir, std::vector<double> initial_cohesion);
+  // initial_cohesion: c0 per material, for c/c0. resume = true continues the
+  // files of a run interrupted after its checkpoint at resume_time (dropping
+  // what was written later) and takes the headline values seen so far from
+  // series.csv, so that the summary covers the whole run.
+  MpmOutputs(std::filesystem::path dir, std::vector<double> initial_cohesion, bool resume = false,
+             double resume_time = 0.0);
 
   void on_series(const Solver<D>& s) override;
   void on_snapshot(const Solver<D>& s) override;
+  // Flushes the series, then writes checkpoint.bin.
+  void on_checkpoint(const Solver<D>& s) override;
   void on_progress(double time, double end, double steps_per_s) override;
 
   std::function<void(double, double, double)> progress;  // set by the app
@@ -33,6 +39,10 @@ class MpmOutputs final : public MpmObserver<D> {
   double initial_front_x = 0.0, initial_top = 0.0;
   // membranes.csv and membranes.pvd, once a run with membranes is seen.
   const MembraneOutputs<D>* membrane_outputs() const { return membranes_.get(); }
+
+  static std::filesystem::path checkpoint_path(const std::filesystem::path& dir) {
+    return dir / "checkpoint.bin";
+  }
 
  private:
   double c_ratio(const Solver<D>& s, std::size_t p) const;
@@ -45,6 +55,8 @@ class MpmOutputs final : public MpmObserver<D> {
   bool first_ = true;
   std::unique_ptr<MembraneOutputs<D>> membranes_;
   MembraneOutputs<D>* membranes(const Solver<D>& s);
+  bool resume_ = false;
+  double resume_time_ = 0.0;
 };
 
 }  // namespace talus::mpm

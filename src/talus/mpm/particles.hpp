@@ -12,12 +12,15 @@ namespace talus::mpm {
 template <int D>
 struct Particles {
   using Vec = typename Space<D>::Vec;
+  using Mat = Eigen::Matrix<double, D, D>;
 
   std::vector<Vec> x, v;
   std::vector<double> mass, volume, volume0;  // volume per metre of depth in 2D
   std::vector<MaterialState> state;
   std::vector<Mat3> velocity_gradient;  // of the last step, 3x3 (plane strain in 2D)
   std::vector<int> material;            // index into the solver's materials
+  // APIC affine matrix B_p (Jiang et al. 2015), zero unless the APIC transfer runs.
+  std::vector<Mat> affine;
 
   std::size_t size() const { return x.size(); }
 
@@ -31,6 +34,7 @@ struct Particles {
     state.push_back(s);
     velocity_gradient.push_back(Mat3::Zero());
     material.push_back(mat);
+    affine.push_back(Mat::Zero());
   }
 };
 

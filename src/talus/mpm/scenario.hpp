@@ -2,9 +2,11 @@
 // The resolved parameters of an MPM run, as read from a scenario file by
 // io/scenario_mpm.cpp (angles in radians, defaults filled in).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "talus/geometry/flume.hpp"
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/materials.hpp"
 #include "talus/mpm/membrane.hpp"
@@ -45,9 +47,28 @@ struct RigidBodyParams {
   double friction = 0.0;
 };
 
+// The Mancarella & Hungr flume (2D): its bed as a rigid friction wall of
+// boundary particles and, with a release material, the release triangle
+// behind the gate filled with points (mpm/flume.hpp). The analysis keys are
+// those of the DEM's [flume] (front quantile, deposit profile bins, tail).
+struct MpmFlumeParams {
+  double beta = 0.0;         // barrier angle, rad
+  double arc_radius = 0.10;  // m
+  std::optional<double> l_star, barrier_length;
+  double wall_friction = 0.0;    // basal friction angle, rad
+  int wall_layers = 3;           // rows of boundary particles below the bed
+  std::string release_material;  // empty: no release (points from [[bodies]] only)
+  int release_material_index = -1;
+  int release_per_cell = 2;
+  double front_quantile = 0.998;
+  double profile_bin = 0.01;    // m
+  double tail_thickness = 0.0;  // m; 0: three point spacings of the release
+};
+
 struct MpmOutputParams {
-  double series_interval = 0.0;    // s; 0 = 200 rows over the run
-  double snapshot_interval = 0.0;  // s; 0 = first and last only
+  double series_interval = 0.0;      // s; 0 = 200 rows over the run
+  double snapshot_interval = 0.0;    // s; 0 = first and last only
+  double checkpoint_interval = 0.0;  // s; 0 = no checkpoints
   bool snapshots = true;
 };
 
@@ -61,6 +82,7 @@ struct MpmScenario {
   std::vector<BodyParams> bodies;
   std::vector<RigidBodyParams> rigid_bodies;
   std::vector<MembraneParams> membranes;
+  std::optional<MpmFlumeParams> flume;
   MpmOutputParams output;
 };
 
@@ -72,6 +94,9 @@ Solver<D> build_mpm(const MpmScenario& sc);
 // The boundary particles of a rigid body on a grid of the given cell size.
 template <int D>
 RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size);
+
+// The flume's geometry (InputError keys flume.* when its pieces do not fit).
+geometry::FlumeGeometry flume_geometry(const MpmFlumeParams& f);
 
 // K0 used for a body's geostatic stress.
 double resolved_k0(const BodyParams& body, const MaterialParams& material);

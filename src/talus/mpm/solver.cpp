@@ -8,6 +8,8 @@
 
 #include "talus/core/error.hpp"
 #include "talus/mpm/membrane_grid.hpp"
+#include "talus/mpm/apic.hpp"
+#include "talus/mpm/smoothing.hpp"
 
 namespace talus::mpm {
 
@@ -82,6 +84,7 @@ void Solver<D>::to_grid(bool forces) {
   buffers_.resize(threads);
   const Vec g = gravity();
   const double l = params.gimp_half_width;
+  const bool apic = params.transfer == Transfer::Apic;
   bool outside = false;
   std::int64_t bad = 0;
 #pragma omp parallel num_threads(threads)
@@ -105,10 +108,12 @@ void Solver<D>::to_grid(bool forces) {
       const Vec mv = m * particles.v[p];
       const auto sigma = particles.state[p].stress.template topLeftCorner<D, D>().eval();
       const double vol = particles.volume[p];
+      const auto mc = apic ? (m * apic_velocity_gradient<D>(st, particles.affine[p])).eval()
+                           : Eigen::Matrix<double, D, D>::Zero().eval();
       for (int k = 0; k < st.count; ++k) {
         const auto a = st.node[k];
         buf.mass[a] += st.w[k] * m;
-        buf.momentum[a] += st.w[k] * mv;
+        buf.momentum[a] += st.w[k] * (apic ? (mv + mc * st.dx[k]).eval() : mv);
         if (forces) buf.force[a] += st.w[k] * m * g - vol * (sigma * st.grad[k]);
       }
     }
@@ -173,6 +178,7 @@ void Solver<D>::step_with(double dt) {
   // 3. grid -> particles: velocities (and for USL positions and gradients)
   const double flip = params.flip, l = params.gimp_half_width;
   const bool usl = params.scheme == Scheme::Usl;
+  const bool apic = params.transfer == Transfer::Apic;
 #pragma omp parallel for schedule(static)
   for (std::int64_t p = 0; p < n; ++p) {
     Stencil<D, Shape> st;
@@ -185,7 +191,12 @@ void Solver<D>::step_with(double dt) {
       v_pic += st.w[k] * vn;
       if (usl) grad_v += vn * st.grad[k].transpose();
     }
-    particles.v[p] = flip * (particles.v[p] + dv) + (1.0 - flip) * v_pic;
+    if (apic) {
+      particles.v[p] = v_pic;
+      particles.affine[p] = apic_affine<D>(st, grid.velocity);
+    } else {
+      particles.v[p] = flip * (particles.v[p] + dv) + (1.0 - flip) * v_pic;
+    }
     if (usl) {
       particles.velocity_gradient[p] = embed(grad_v);
       particles.x[p] += dt * v_pic;
@@ -281,6 +292,7 @@ void Solver<D>::rigid_contact(double mass_floor) {
 
 template <int D>
 void Solver<D>::update_stresses(double dt) {
+  if (params.volumetric_smoothing) smooth_volumetric_strain(grid, particles, smoothing_);
   for (std::size_t m = 0; m < materials.size(); ++m) {
     const std::vector<int>& list = by_material_[m];
     const auto count = static_cast<std::int64_t>(list.size());

@@ -21,11 +21,17 @@
 namespace talus::mpm {
 
 enum class Scheme { Usl, Musl };
+// Grid-to-particle velocity transfer: FLIP/PIC blend (flip), or APIC.
+enum class Transfer { FlipPic, Apic };
 
 struct SolverParams {
   ShapeKind shape = ShapeKind::Gimp;
   Scheme scheme = Scheme::Musl;
-  double flip = 0.99;            // FLIP share of the velocity update (1 = FLIP, 0 = PIC)
+  double flip = 0.99;  // FLIP share of the velocity update (1 = FLIP, 0 = PIC)
+  Transfer transfer = Transfer::FlipPic;
+  // Jassim (2011): the volumetric strain increment averaged over each cell
+  // (against volumetric locking, mpm/smoothing.hpp).
+  bool volumetric_smoothing = false;
   double local_damping = 0.0;    // Cundall's local damping coefficient, [0, 1)
   double cfl = 0.3;              // dt = cfl h / (c + |v|max)
   double fixed_time_step = 0.0;  // > 0: use this instead of the CFL rule
@@ -80,6 +86,7 @@ class Solver {
   };
   std::vector<NodeBuffer> buffers_;         // one per thread
   std::vector<RigidNodes<D>> rigid_nodes_;  // one per rigid body
+  std::vector<double> smoothing_;           // per-cell sums (volumetric smoothing)
 };
 
 }  // namespace talus::mpm
