@@ -95,6 +95,9 @@ TEST(MpmMembraneScenario, BadInputNamesFileLineAndKey) {
                     "[[0.1, 0.1], [0.2, 0.1]]\n"
                     "[[membranes]]\nname = \"bag\""),
                "membrane 'bag' is defined twice");
+  // The MPM checkpoint holds no membrane nodes: a run that would write one is refused.
+  expect_error(kBase + "[output]\ncheckpoint_interval = 0.1\n",
+               "'checkpoint_interval': checkpoints of MPM runs with [[membranes]]");
 }
 
 TEST(MpmMembraneScenario, BundledGeotextileBagBuilds) {
