@@ -144,6 +144,8 @@ Membrane make_membrane(Mesh mesh, const MembraneParams& params) {
   m.v.assign(m.x.size(), Vec3::Zero());
   m.f.assign(m.x.size(), Vec3::Zero());
   m.fixed.assign(m.x.size(), 0);
+  m.follows.assign(m.x.size(), -1);
+  m.anchor = m.x;
   m.rest = rest_shape(mesh, m.x);
   m.mass = vertex_masses(mesh, params.density, params.thickness);
   m.mesh = std::move(mesh);

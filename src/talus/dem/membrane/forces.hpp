@@ -104,6 +104,10 @@ struct Membrane {
   std::vector<double> mass;
   std::vector<Vec3> x, v, f;
   std::vector<char> fixed;
+  // Fixed particles that follow a wall's translation (the triaxial plates):
+  // index into the run's walls, -1 for none; x = anchor + the wall's displacement.
+  std::vector<int> follows;
+  std::vector<Vec3> anchor;
 };
 // Rest state and masses from the mesh as it is; zero velocities.
 Membrane make_membrane(Mesh mesh, const MembraneParams& params);

@@ -30,8 +30,15 @@ void MembraneStep::step(DemSystem<3>& s) {
   kick(s, 0.5 * dt);
   for (auto& mb : s.membranes) {
     auto& m = mb.body;
-    for (std::size_t i = 0; i < m.x.size(); ++i)
-      if (!m.fixed[i]) m.x[i] += dt * m.v[i];
+    for (std::size_t i = 0; i < m.x.size(); ++i) {
+      if (!m.fixed[i]) {
+        m.x[i] += dt * m.v[i];
+      } else if (m.follows[i] >= 0) {  // the walls are already at the new time
+        const auto& w = s.walls[m.follows[i]];
+        m.x[i] = m.anchor[i] + w.displacement(s.time);
+        m.v[i] = w.velocity_at(m.x[i], s.time);
+      }
+    }
   }
   compute_forces(s);
   kick(s, 0.5 * dt);

@@ -35,6 +35,9 @@ class MembraneStep {
     p.wall_contacts[i] += contacts_[i];
   }
 
+  // The membranes' contact force on grain i from the last compute_forces.
+  const Vec3& grain_force(int i) const { return force_[i]; }
+
   // The two bounds of the run's stable step (Stepper::critical_time_step) that
   // the membranes add. Internal: min over membranes of
   // membrane::critical_time_step. Contact: min over membranes and grain
