@@ -30,8 +30,7 @@ TriaxialSetup make_triaxial_setup(const dem::DemScenario& sc, const dem::DemSyst
   const auto& spec = sc.membranes[index_of(sc.membranes, p.membrane, "membrane")];
   t.confining_pressure = -spec.pressure;
   t.area = M_PI * spec.radius * spec.radius;
-  t.servo_stop =
-      std::max(s.walls[t.bottom].motion.servo_stop, s.walls[t.top].motion.servo_stop);
+  t.servo_stop = std::max(s.walls[t.bottom].motion.servo_stop, s.walls[t.top].motion.servo_stop);
   return t;
 }
 
@@ -49,8 +48,7 @@ double gap_at_servo_stop(const dem::DemSystem<3>& s, const TriaxialSetup& t) {
   return d.dot(b.servo_normal);
 }
 
-double membrane_mean_radius(const dem::DemSystem<3>& s, const TriaxialSetup& t,
-                            const Vec3& axis) {
+double membrane_mean_radius(const dem::DemSystem<3>& s, const TriaxialSetup& t, const Vec3& axis) {
   const auto& x = s.membranes[t.membrane].body.x;
   double sum = 0.0;
   for (const Vec3& q : x) sum += std::hypot(q.x() - axis.x(), q.y() - axis.y());
@@ -100,8 +98,8 @@ void TriaxialObserver::on_series(const dem::DemRun<3>& run) {
     if (sigma > peak_sigma_) peak_sigma_ = sigma, peak_eps_ = eps;
     last_eps_ = eps;
   }
-  csv_->row({s.time, loading ? 1.0 : 0.0, h, eps, p[0], p[1], p_plates,
-             setup_.confining_pressure, sigma, membrane_mean_radius(s, setup_, axis_)});
+  csv_->row({s.time, loading ? 1.0 : 0.0, h, eps, p[0], p[1], p_plates, setup_.confining_pressure,
+             sigma, membrane_mean_radius(s, setup_, axis_)});
 }
 
 nlohmann::json TriaxialObserver::finish() const {

@@ -180,7 +180,8 @@ struct Walls<3> {
   }
   double signed_distance(const V& p) const {
     double d = kInf;
-    for (int face = first_face(); face < last_face(); ++face) d = std::min(d, face_distance(face, p));
+    for (int face = first_face(); face < last_face(); ++face)
+      d = std::min(d, face_distance(face, p));
     return d;
   }
   void candidates(const V& p, double reach, std::vector<int>& out) const {

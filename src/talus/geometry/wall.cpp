@@ -259,7 +259,8 @@ Wall make_wall(const dem::WallParams& params, int material_index, int dimension)
       break;
   }
   if (w.motion.servo_pressure != 0) {
-    if (w.kind != dem::WallKind::Plane) fail(w, "a servo needs a plane wall (it moves along the normal)");
+    if (w.kind != dem::WallKind::Plane)
+      fail(w, "a servo needs a plane wall (it moves along the normal)");
     if (!(w.motion.servo_area > 0) || !(w.motion.servo_speed > 0))
       fail(w, "a servo needs a positive area and speed");
     wall.servo_normal = wall.reference[0].n;

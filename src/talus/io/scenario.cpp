@@ -25,8 +25,8 @@ using detail::required_number_in;
 
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}, {"compare", 3}};
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method", "name",      "description", "run",       "contact",   "materials",
-    "flume",  "dam_break", "walls",       "particles", "membranes", "triaxial", "output"};
+    "method",    "name",  "description", "run",       "contact",  "materials", "flume",
+    "dam_break", "walls", "particles",   "membranes", "triaxial", "output"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;

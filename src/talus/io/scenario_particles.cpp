@@ -13,7 +13,7 @@ using dem::SourceKind;
 
 const std::vector<std::string_view> kSourceKeys = {
     "list",       "box",      "spacing",          "radius", "jitter", "polygon", "radius_min",
-    "radius_max", "porosity", "packing_fraction", "shrink", "count",  "file", "cylinder"};
+    "radius_max", "porosity", "packing_fraction", "shrink", "count",  "file",    "cylinder"};
 
 dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_material,
                                 const DemContext& ctx) {

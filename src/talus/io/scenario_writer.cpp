@@ -181,11 +181,11 @@ class Writer {
       t["list"] = std::move(list);
     }
     if (fill && s.cylinder_radius > 0) {
-      t["cylinder"] = Json{{"center", vec(Vec3(0.5 * (s.box_min.x() + s.box_max.x()),
-                                               0.5 * (s.box_min.y() + s.box_max.y()),
-                                               s.box_min.z()))},
-                           {"radius", s.cylinder_radius},
-                           {"height", s.box_max.z() - s.box_min.z()}};
+      t["cylinder"] =
+          Json{{"center", vec(Vec3(0.5 * (s.box_min.x() + s.box_max.x()),
+                                   0.5 * (s.box_min.y() + s.box_max.y()), s.box_min.z()))},
+               {"radius", s.cylinder_radius},
+               {"height", s.box_max.z() - s.box_min.z()}};
     } else if (s.kind == SourceKind::Lattice || (fill && s.polygon.empty())) {
       t["box"] = box(s.box_min, s.box_max);
     }

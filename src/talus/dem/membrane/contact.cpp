@@ -176,11 +176,10 @@ namespace {
 // membrane's share.
 template <class AddReaction>
 GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
-                          std::span<const Vec3> v_mem, AddReaction&& add_reaction,
-                          int64_t grain_id, const Grain& g,
-                          std::span<const TriangleContact> contacts,
-                          const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                          ContactMemory& memory, int lane) {
+                          std::span<const Vec3> v_mem, AddReaction&& add_reaction, int64_t grain_id,
+                          const Grain& g, std::span<const TriangleContact> contacts,
+                          const ViscoelasticHertz::Coeffs& coeffs, double dt, ContactMemory& memory,
+                          int lane) {
   GrainForce out;
   if (contacts.empty()) return out;
   const std::span<ContactHistory<3>> springs = memory.springs(grain_id, contacts, g.radius, lane);
@@ -236,8 +235,8 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  const ViscoelasticHertz::Coeffs& coeffs, double dt,
                                  ContactMemory& memory, int lane) {
   return contact_forces(
-      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { reactions.emplace_back(v, f); }, grain_id,
-      g, contacts, coeffs, dt, memory, lane);
+      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { reactions.emplace_back(v, f); }, grain_id, g,
+      contacts, coeffs, dt, memory, lane);
 }
 
 Eigen::Vector3i TriangleGrid::cell_of(const Vec3& p) const {

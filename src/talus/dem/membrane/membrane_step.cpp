@@ -15,6 +15,7 @@ MembraneStep::MembraneStep(const DemSystem<3>& s) {
                                                 pair_coefficients(s.contact, grain, wall)));
     }
   grids_.resize(s.membranes.size());
+  edge_forces_.resize(s.membranes.size());
 }
 
 void MembraneStep::kick(DemSystem<3>& s, double h) const {
@@ -80,7 +81,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
     std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
-    add_internal_forces(m);
+    add_internal_forces_tasks(m, edge_forces_[k]);
     mb.memory.begin_step(kLanes);
     // The triangles' bounding box, grown by the largest grain radius: grains
     // outside it cannot touch (most grains, most steps).

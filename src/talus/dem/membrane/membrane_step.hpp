@@ -8,8 +8,8 @@
 // waiting threads of the team pick up: the grains are cut into kLanes fixed
 // index ranges, each with its own reaction list and contact-memory lane, and
 // the reactions are added to the membrane in lane order, so the result is the
-// same for any number of threads. The internal forces run on one thread (their
-// kernels scatter to shared vertices).
+// same for any number of threads. The internal forces' per-edge terms run as
+// tasks too, and are added to the membrane particles in edge order on one thread.
 #include <span>
 #include <vector>
 
@@ -77,6 +77,7 @@ class MembraneStep {
 
   std::vector<ViscoelasticHertz::Coeffs> coeffs_;
   std::vector<TriangleGrid> grids_;
+  std::vector<EdgeForces> edge_forces_;
   std::vector<Vec3> force_, torque_;
   std::vector<int> contacts_;
   std::vector<Lane> lanes_ = std::vector<Lane>(kLanes);
