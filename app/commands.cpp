@@ -13,6 +13,7 @@
 #include "summary.hpp"
 #include "talus/analysis/dam_break.hpp"
 #include "talus/analysis/flume_observer.hpp"
+#include "talus/analysis/triaxial.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
 #include "talus/dem/builder.hpp"
@@ -98,6 +99,13 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       observers.push_back(flume.get());
     }
   }
+  std::unique_ptr<analysis::TriaxialObserver> triaxial;
+  if constexpr (D == 3) {
+    if (sc.triaxial) {
+      triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system);
+      observers.push_back(triaxial.get());
+    }
+  }
   try {
     const auto stats = dem::run_dem<D>(*run, control, observers, !resume);
     summary.steps = stats.steps;
@@ -109,6 +117,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
         summary.analysis["dam_break"] = analysis::report_dam_break(grains, *sc.dam_break, out);
       }
     }
+    if (triaxial) summary.analysis["triaxial"] = triaxial->finish();
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());

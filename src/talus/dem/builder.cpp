@@ -76,6 +76,7 @@ Region region_of(const ParticleSourceParams& s, int dim) {
   reg.polygon = s.polygon;
   reg.box_min = s.box_min;
   reg.box_max = s.box_max;
+  reg.cylinder_radius = s.cylinder_radius;
   return reg;
 }
 
@@ -171,9 +172,11 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
         geometry::make_wall(w, material_of(sc, w.material, "[[walls]] '" + w.name + "'"), D));
 
   if constexpr (D == 3) {
-    for (const auto& m : sc.membranes)
+    for (const auto& m : sc.membranes) {
       s.membranes.push_back(membrane::make_membrane_body(
           m, material_of(sc, m.material, "[[membranes]] '" + m.name + "'")));
+      membrane::attach_rings(s.membranes.back(), m, s.walls);
+    }
   } else if (!sc.membranes.empty()) {
     throw InputError("[[membranes]]: membranes need run.dimension = 3");
   }

@@ -157,38 +157,61 @@ struct Walls<2> {
 };
 
 // 3D: the box; each face is a plane, and a sum of plane springs is exact for a convex region.
+// A cylinder keeps the two z faces (4, 5) and replaces the four side faces by its mantle (face 6).
 template <>
 struct Walls<3> {
   using V = Vec<3>;
   V lo, hi;
+  double radius = 0.0;  // > 0: cylinder about the vertical axis through `axis`
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero();
   Walls(const Region& region, const Vec3& origin, double unit)
-      : lo((region.box_min - origin) / unit), hi((region.box_max - origin) / unit) {}
+      : lo((region.box_min - origin) / unit), hi((region.box_max - origin) / unit) {
+    if (region.cylinder_radius > 0) {
+      radius = region.cylinder_radius / unit;
+      axis = 0.5 * (lo + hi).head<2>();
+    }
+  }
+  int first_face() const { return radius > 0 ? 4 : 0; }
+  int last_face() const { return radius > 0 ? 7 : 6; }
   double face_distance(int face, const V& p) const {
+    if (face == 6) return radius - (p.head<2>() - axis).norm();
     const int a = face / 2;
     return face % 2 == 0 ? p[a] - lo[a] : hi[a] - p[a];
   }
   double signed_distance(const V& p) const {
     double d = kInf;
-    for (int face = 0; face < 6; ++face) d = std::min(d, face_distance(face, p));
+    for (int face = first_face(); face < last_face(); ++face)
+      d = std::min(d, face_distance(face, p));
     return d;
   }
   void candidates(const V& p, double reach, std::vector<int>& out) const {
-    for (int face = 0; face < 6; ++face)
+    for (int face = first_face(); face < last_face(); ++face)
       if (face_distance(face, p) < reach) out.push_back(face);
   }
   void add_force(const V& p, double r, const int* ids, int n, V& f, Stats& s) const {
     for (int c = 0; c < n; ++c) {
       const double penetration = r - face_distance(ids[c], p);
       if (penetration <= 0) continue;
-      f[ids[c] / 2] += ids[c] % 2 == 0 ? penetration : -penetration;
+      if (ids[c] == 6) {  // towards the axis
+        const Eigen::Vector2d d = p.head<2>() - axis;
+        const double len = d.norm();
+        if (len > 0) f.head<2>() -= penetration / len * d;
+      } else {
+        f[ids[c] / 2] += ids[c] % 2 == 0 ? penetration : -penetration;
+      }
       s.add_wall(penetration);
     }
   }
   void project_inside(V& p, double r) const {
     const double margin = r * (1.0 + kInsideSlack) + 1e-12 * r;
-    for (int a = 0; a < 3; ++a)
+    for (int a = radius > 0 ? 2 : 0; a < 3; ++a)
       p[a] = hi[a] - lo[a] > 2 * margin ? std::clamp(p[a], lo[a] + margin, hi[a] - margin)
                                         : 0.5 * (lo[a] + hi[a]);
+    if (radius > 0) {
+      const Eigen::Vector2d d = p.head<2>() - axis;
+      const double len = d.norm(), reach = std::max(0.0, radius - margin);
+      if (len > reach) p.head<2>() = axis + (len > 0 ? Eigen::Vector2d(d * (reach / len)) : d);
+    }
   }
 };
 
@@ -546,6 +569,8 @@ OverlapStats stats_of(const Region& region, const std::vector<PackedParticle>& p
 }  // namespace
 
 double Region::area_or_volume() const {
+  if (dimension == 3 && cylinder_radius > 0)
+    return M_PI * cylinder_radius * cylinder_radius * (box_max.z() - box_min.z());
   if (dimension == 3) return (box_max - box_min).prod();
   if (polygon.empty()) return (box_max - box_min).head<2>().prod();
   return 0.5 * std::abs(twice_signed_area(polygon));

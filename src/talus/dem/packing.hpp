@@ -19,10 +19,13 @@ struct PackedParticle {
 };
 
 // Where particles go. 2D: a simple polygon (either orientation; z ignored) or, when the polygon
-// is empty, the rectangle box_min..box_max in x, y. 3D: the box.
+// is empty, the rectangle box_min..box_max in x, y. 3D: the box or, when cylinder_radius > 0, the
+// cylinder of that radius about the vertical axis through the centre of the box, from box_min.z to
+// box_max.z (the triaxial sample inside its membrane).
 struct Region {
   int dimension = 2;
   std::vector<Vec3> polygon;
+  double cylinder_radius = 0.0;
   Vec3 box_min = Vec3::Zero();
   Vec3 box_max = Vec3::Zero();
 

@@ -68,6 +68,16 @@ struct WallMotionParams {
   double phase = 0.0;      // rad
   Vec3 direction = Vec3::UnitZ();
   double remove_at = kNever;  // s
+  // Stress control of a plane wall (the triaxial test's plates, Götz 2024
+  // §3.3.1): while t < servo_stop the wall moves along its normal n (towards
+  // the particles) at v = servo_speed * clamp((p* - p) / p*, -1, 1), where
+  // p = -F.n / servo_area is the pressure the particles exert on it and p* =
+  // servo_pressure; afterwards it stays where the servo left it (plus any
+  // prescribed motion). servo_pressure = 0: no servo.
+  double servo_pressure = 0.0;  // Pa
+  double servo_area = 0.0;      // m^2
+  double servo_speed = 0.0;     // m/s, the largest servo speed
+  double servo_stop = 0.0;      // s
 };
 
 struct WallParams {
@@ -112,8 +122,11 @@ struct ParticleSourceParams {
   double spacing = 0.0;
   double radius = 0.0;          // monodisperse lattice radius
   std::string jitter = "none";  // none | peer
-  // RandomFill / Grow: region is a box or a polygon (2D, counter-clockwise).
+  // RandomFill / Grow: region is a box or a polygon (2D, counter-clockwise),
+  // or (3D, cylinder_radius > 0) the vertical cylinder of that radius whose
+  // bounding box is box_min..box_max.
   std::vector<Vec3> polygon;
+  double cylinder_radius = 0.0;
   double radius_min = 0.0, radius_max = 0.0;
   double porosity = 0.0;          // RandomFill target porosity
   double packing_fraction = 0.0;  // Grow target solid fraction
@@ -217,7 +230,19 @@ struct MembraneSpec {
   double bending_damping = 0.0;    // k_diss, N m s
   double pressure = 0.0;           // p, Pa, force A p n per triangle (n outwards): < 0 squeezes
   MembraneFixed fixed = MembraneFixed::None;
+  // Cylinders: walls whose translation the pinned bottom / top ring follows
+  // (the triaxial plates); empty = the ring stays where it is.
+  std::string bottom_ring_wall, top_ring_wall;
   std::string material;  // [[materials]] entry for grain-membrane contacts
+};
+
+// The triaxial test (spec/membranes-and-jamming.md, Götz 2024 §3.3.1): which
+// plates and membrane the analysis reads. The plates are plane walls with a
+// servo (stress-controlled phase up to the top plate's servo_stop, where the
+// gap is h0) and then a prescribed velocity; the confining pressure is the
+// membrane's -pressure, the plate area its pi R^2.
+struct TriaxialParams {
+  std::string bottom_plate, top_plate, membrane;
 };
 
 struct DemScenario {
@@ -232,6 +257,7 @@ struct DemScenario {
   OutputParams output;
   std::optional<FlumeParams> flume;
   std::optional<DamBreakParams> dam_break;
+  std::optional<TriaxialParams> triaxial;
 };
 
 }  // namespace talus::dem

@@ -151,6 +151,9 @@ class Stepper final : public StepperBase<D> {
       moved = max_moved_;
       max_moved_ = 0.0;
       s_.time = static_cast<double>(s_.step + 1) * dt;
+      // Stress-controlled walls (geometry/wall.hpp) move on the forces just closed.
+      if (!s_.settling)
+        for (auto& w : s_.walls) w.advance_servo(s_.time - dt, dt);
       const bool walls_changed = update_walls(false);
       const double wall_moved = wall_motion_since_build();
       const double half_skin = 0.5 * s_.skin;

@@ -24,7 +24,7 @@ bool moving_at(const dem::WallMotionParams& m, double t) {
 }  // namespace
 
 Vec3 Wall::displacement(double t) const {
-  Vec3 d = motion.velocity * moving_time(motion, t);
+  Vec3 d = motion.velocity * moving_time(motion, t) + servo_travel * servo_normal;
   if (motion.amplitude != 0) {
     d += motion.amplitude * std::sin(2 * M_PI * motion.frequency * t + motion.phase) *
          motion.direction.normalized();
@@ -40,7 +40,23 @@ bool Wall::moves() const {
   const bool translates = motion.velocity != Vec3::Zero() && motion.move_stop > motion.move_start;
   const bool rotates =
       motion.angular_velocity != Vec3::Zero() && motion.move_stop > motion.move_start;
-  return translates || rotates || motion.amplitude != 0;
+  return translates || rotates || motion.amplitude != 0 || has_servo();
+}
+
+double Wall::servo_pressure_now() const {
+  return motion.servo_area > 0 ? -force.dot(servo_normal) / motion.servo_area : 0.0;
+}
+
+void Wall::advance_servo(double t, double dt) {
+  if (!has_servo() || t >= motion.servo_stop) {
+    servo_speed = 0.0;
+    return;
+  }
+  // Proportional control saturating at servo_speed: the wall approaches at
+  // full speed while nothing pushes back and settles where p = p*.
+  const double error = (motion.servo_pressure - servo_pressure_now()) / motion.servo_pressure;
+  servo_speed = motion.servo_speed * std::clamp(error, -1.0, 1.0);
+  servo_travel += servo_speed * dt;
 }
 
 void Wall::update(double t) {
@@ -78,6 +94,7 @@ Vec3 Wall::velocity_at(const Vec3& point, double t) const {
   if (moving_at(motion, t)) {
     v += motion.velocity + motion.angular_velocity.cross(point - pivot_at(t));
   }
+  v += servo_speed * servo_normal;
   if (motion.amplitude != 0) {
     const double w = 2 * M_PI * motion.frequency;
     v += motion.amplitude * w * std::cos(w * t + motion.phase) * motion.direction.normalized();
@@ -240,6 +257,13 @@ Wall make_wall(const dem::WallParams& params, int material_index, int dimension)
     case dem::WallKind::Cylinder:
       wall.reference.push_back(cylinder(w));
       break;
+  }
+  if (w.motion.servo_pressure != 0) {
+    if (w.kind != dem::WallKind::Plane)
+      fail(w, "a servo needs a plane wall (it moves along the normal)");
+    if (!(w.motion.servo_area > 0) || !(w.motion.servo_speed > 0))
+      fail(w, "a servo needs a positive area and speed");
+    wall.servo_normal = wall.reference[0].n;
   }
   wall.current = wall.reference;
   wall.update(0.0);

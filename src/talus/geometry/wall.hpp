@@ -9,7 +9,11 @@
 //     (the pivot travels with the wall),
 //   - vibration A sin(2 pi f t + phase) along `direction`, at all times, so the
 //     given geometry is the rest position and update(0) applies A sin(phase),
-//   - removal: the wall is inactive from remove_at on.
+//   - removal: the wall is inactive from remove_at on,
+//   - a servo (plane walls, motion.servo_*): the one motion that is state, not
+//     a function of time: advance_servo() moves the wall along its normal from
+//     the force of the last step until servo_stop, and displacement() adds the
+//     distance travelled (servo_travel).
 #include <string>
 #include <vector>
 
@@ -30,6 +34,10 @@ struct Wall {
   Vec3 force = Vec3::Zero();
   Vec3 torque = Vec3::Zero();
   Vec3 impulse = Vec3::Zero();
+  // Servo state: distance moved along servo_normal (the plane's normal, towards
+  // the particles) and the speed of the current step.
+  Vec3 servo_normal = Vec3::UnitZ();
+  double servo_travel = 0.0, servo_speed = 0.0;
 
   // Recomputes `current` from `reference` and the motion at time t.
   void update(double t);
@@ -43,6 +51,12 @@ struct Wall {
   double rotation_angle(double t) const;
   // False for a wall that never moves: update() is then a no-op.
   bool moves() const;
+  bool has_servo() const { return motion.servo_pressure != 0.0; }
+  // Pressure the particles exert on the wall, -force . servo_normal / servo_area.
+  double servo_pressure_now() const;
+  // The servo's step from t to t + dt (call before update(t + dt)), from the
+  // force of the step that ended at t; no-op without a servo or from servo_stop on.
+  void advance_servo(double t, double dt);
   // Axis-aligned box around the current primitives.
   void bounds(Vec3& lo, Vec3& hi) const;
 };

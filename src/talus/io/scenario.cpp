@@ -25,8 +25,8 @@ using detail::required_number_in;
 
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}, {"compare", 3}};
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method", "name",      "description", "run",       "contact",   "materials",
-    "flume",  "dam_break", "walls",       "particles", "membranes", "output"};
+    "method",    "name",  "description", "run",       "contact",  "materials", "flume",
+    "dam_break", "walls", "particles",   "membranes", "triaxial", "output"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;
@@ -232,6 +232,7 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
         });
     s.walls.push_back(std::move(wall));
   }
+  for (const auto& w : s.walls) ctx.wall_names.push_back(w.name);
 
   std::vector<TomlReader> sources = root.tables("particles");
   if (sources.empty() && s.sources.empty())
@@ -254,6 +255,7 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
     s.membranes.push_back(std::move(m));
   }
   check_densities(s, material_readers);
+  if (auto tri = root.optional_table("triaxial")) detail::read_triaxial(*tri, s);
 
   TomlReader output = table_or_empty(root, "output", empty);
   s.output = read_output(output);
@@ -261,6 +263,11 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
     output.fail(
         "checkpoint_interval",
         "checkpoints of runs with [[membranes]] are not implemented yet (leave it out or 0)");
+  const bool servo = std::any_of(s.walls.begin(), s.walls.end(),
+                                 [](const auto& w) { return w.motion.servo_pressure > 0; });
+  if (servo && s.output.checkpoint_interval > 0.0)
+    output.fail("checkpoint_interval",
+                "checkpoints of runs with servo walls are not implemented yet (leave it out or 0)");
   root.finish();
   return s;
 }

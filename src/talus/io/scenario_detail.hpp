@@ -77,6 +77,7 @@ struct DemContext {
   int dimension = 3;
   std::filesystem::path folder;  // of the scenario file, for relative paths
   std::vector<std::string> material_names;
+  std::vector<std::string> wall_names;  // filled once [[walls]] are read
 };
 
 // An interval a number must lie in, and how to say so in a message.
@@ -122,6 +123,11 @@ dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx);
 // [[membranes]] (3D only), and its table for the resolved scenario.
 dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemContext& ctx);
 nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m);
+// [triaxial] (after walls and membranes): fills s.triaxial, checking that the
+// plates are servo-controlled plane walls and the membrane a confining cylinder;
+// and its table for the resolved scenario.
+void read_triaxial(TomlReader& r, dem::DemScenario& s);
+nlohmann::ordered_json triaxial_table(const dem::TriaxialParams& t);
 // Pieces of [[particles]] that [flume.release] shares.
 // box_min/box_max of a source from its polygon.
 void set_polygon_bounds(dem::ParticleSourceParams& s);

@@ -3,6 +3,8 @@
 // particles and the contact material; and the writer's table for one.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "talus/io/scenario_detail.hpp"
 
 namespace talus::io::detail {
@@ -72,6 +74,24 @@ void check_fixed(TomlReader& r, const dem::MembraneSpec& m) {
            "cylinder)");
 }
 
+// bottom_ring_wall / top_ring_wall: the pinned ring follows that wall.
+void read_ring_walls(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
+  const bool bottom = m.fixed == MembraneFixed::BottomRing || m.fixed == MembraneFixed::BothRings;
+  const bool top = m.fixed == MembraneFixed::TopRing || m.fixed == MembraneFixed::BothRings;
+  for (const bool is_top : {false, true}) {
+    const std::string key = is_top ? "top_ring_wall" : "bottom_ring_wall";
+    if (!r.has(key)) continue;
+    if (!(is_top ? top : bottom))
+      r.fail(key, fmt::format("needs fixed = \"{}\" or \"both_rings\" (the ring it moves is "
+                              "pinned)",
+                              is_top ? "top_ring" : "bottom_ring"));
+    std::string& name = is_top ? m.top_ring_wall : m.bottom_ring_wall;
+    name = r.required_string(key);
+    if (std::find(ctx.wall_names.begin(), ctx.wall_names.end(), name) == ctx.wall_names.end())
+      r.fail(key, fmt::format("no wall named '{}' (expected the name of a [[walls]] entry)", name));
+  }
+}
+
 }  // namespace
 
 dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemContext& ctx) {
@@ -96,6 +116,7 @@ dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemConte
   m.pressure = r.number("pressure", 0.0);
   m.fixed = r.enumeration("fixed", kMembraneFixed, MembraneFixed::None);
   check_fixed(r, m);
+  read_ring_walls(r, m, ctx);
   m.material = r.required_string("material");
   check_material(r, "material", m.material, ctx);
   r.finish();
@@ -139,6 +160,8 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
   t["bending_damping"] = m.bending_damping;
   t["pressure"] = m.pressure;
   t["fixed"] = name_of(kMembraneFixed, m.fixed);
+  if (!m.bottom_ring_wall.empty()) t["bottom_ring_wall"] = m.bottom_ring_wall;
+  if (!m.top_ring_wall.empty()) t["top_ring_wall"] = m.top_ring_wall;
   t["material"] = m.material;
   return t;
 }

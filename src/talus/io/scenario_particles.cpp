@@ -13,7 +13,7 @@ using dem::SourceKind;
 
 const std::vector<std::string_view> kSourceKeys = {
     "list",       "box",      "spacing",          "radius", "jitter", "polygon", "radius_min",
-    "radius_max", "porosity", "packing_fraction", "shrink", "count",  "file"};
+    "radius_max", "porosity", "packing_fraction", "shrink", "count",  "file",    "cylinder"};
 
 dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_material,
                                 const DemContext& ctx) {
@@ -31,10 +31,24 @@ dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_materia
   return p;
 }
 
-// A box or, in 2D, a polygon (stored counter-clockwise, with its bounding box).
+// A box, in 2D a polygon (stored counter-clockwise, with its bounding box), in
+// 3D a vertical cylinder {center (of its base), radius, height} (stored as its
+// bounding box and radius).
 void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ctx) {
-  if (r.has("box") == r.has("polygon")) {
-    r.fail(r.has("box") ? "polygon" : "box", "expected exactly one of 'box' or 'polygon'");
+  const int given = r.has("box") + r.has("polygon") + r.has("cylinder");
+  if (given != 1) {
+    const char* key = given == 0 ? "box" : (r.has("cylinder") ? "cylinder" : "polygon");
+    r.fail(key, "expected exactly one of 'box', 'polygon' (2D) or 'cylinder' (3D)");
+  }
+  if (auto cyl = r.optional_table("cylinder")) {
+    if (ctx.dimension != 3) r.fail("cylinder", "cylinders are for 3D runs; use 'polygon' in 2D");
+    const Vec3 c = required_point(*cyl, "center", ctx);
+    s.cylinder_radius = required_number_in(*cyl, "radius", positive());
+    const double h = required_number_in(*cyl, "height", positive());
+    cyl->finish();
+    s.box_min = c - Vec3(s.cylinder_radius, s.cylinder_radius, 0.0);
+    s.box_max = c + Vec3(s.cylinder_radius, s.cylinder_radius, h);
+    return;
   }
   if (r.has("box")) {
     read_box(r, "box", ctx, s.box_min, s.box_max);

@@ -33,6 +33,20 @@ dem::WallMotionParams read_motion(TomlReader& r, const DemContext& ctx) {
   m.phase = r.angle("phase", 0.0);
   m.direction = unit_vector_or(r, "direction", ctx, up(ctx));
   m.remove_at = number_in(r, "remove_at", dem::kNever, non_negative());
+  if (auto servo = r.optional_table("servo")) {
+    // Stress control (the triaxial plates): pressure target, the area it acts
+    // on, the largest speed, and when it hands over to the prescribed motion.
+    m.servo_pressure = required_number_in(*servo, "pressure", positive());
+    m.servo_area = required_number_in(*servo, "area", positive());
+    m.servo_speed = required_number_in(*servo, "speed", positive());
+    m.servo_stop = required_number_in(*servo, "stop", positive());
+    servo->finish();
+    if (m.move_start < m.servo_stop && (!m.velocity.isZero(0.0) || !m.angular_velocity.isZero(0.0)))
+      r.expect(false, "start",
+               fmt::format("a time at or after servo.stop = {} s (the prescribed velocity takes "
+                           "over from the servo)",
+                           m.servo_stop));
+  }
   r.finish();
   return m;
 }
@@ -106,9 +120,11 @@ dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ct
   read_geometry(r, w, ctx);
   r.reject(kGeometryKeys,
            fmt::format("not used by walls of type \"{}\"", name_of(kWallKinds, w.kind)));
-  if (auto motion = r.optional_table("motion"))
+  if (auto motion = r.optional_table("motion")) {
     w.motion = read_motion(*motion, ctx);
-  else
+    if (w.motion.servo_pressure > 0 && w.kind != WallKind::Plane)
+      motion->fail("servo", "a servo needs a wall of type \"plane\" (it moves along the normal)");
+  } else
     w.motion.direction = up(ctx);
   r.finish();
   return w;

@@ -99,7 +99,7 @@ class Writer {
     return !(m.velocity.isZero(0.0) && m.angular_velocity.isZero(0.0) && m.pivot.isZero(0.0) &&
              m.move_start == 0.0 && m.move_stop == dem::kNever && m.amplitude == 0.0 &&
              m.frequency == 0.0 && m.phase == 0.0 && m.direction == up &&
-             m.remove_at == dem::kNever);
+             m.remove_at == dem::kNever && m.servo_pressure == 0.0);
   }
   // Degrees rounded to 1e-9 so that 241 is not written as 241.00000000000003.
   static double degrees(double radians) { return std::round(rad2deg(radians) * 1e9) / 1e9; }
@@ -114,6 +114,11 @@ class Writer {
     t["phase"] = degrees(m.phase);
     t["direction"] = vec(m.direction);
     finite(t, "remove_at", m.remove_at);
+    if (m.servo_pressure > 0)
+      t["servo"] = Json{{"pressure", m.servo_pressure},
+                        {"area", m.servo_area},
+                        {"speed", m.servo_speed},
+                        {"stop", m.servo_stop}};
     return t;
   }
 
@@ -175,7 +180,13 @@ class Writer {
       }
       t["list"] = std::move(list);
     }
-    if (s.kind == SourceKind::Lattice || (fill && s.polygon.empty())) {
+    if (fill && s.cylinder_radius > 0) {
+      t["cylinder"] =
+          Json{{"center", vec(Vec3(0.5 * (s.box_min.x() + s.box_max.x()),
+                                   0.5 * (s.box_min.y() + s.box_max.y()), s.box_min.z()))},
+               {"radius", s.cylinder_radius},
+               {"height", s.box_max.z() - s.box_min.z()}};
+    } else if (s.kind == SourceKind::Lattice || (fill && s.polygon.empty())) {
       t["box"] = box(s.box_min, s.box_max);
     }
     if (fill && !s.polygon.empty()) {
@@ -288,6 +299,7 @@ Json scenario_table(const dem::DemScenario& s) {
     for (const auto& m : s.membranes) membranes.push_back(detail::membrane_table(m));
     doc["membranes"] = std::move(membranes);
   }
+  if (s.triaxial) doc["triaxial"] = detail::triaxial_table(*s.triaxial);
   doc["output"] = Writer::output(s.output);
   return doc;
 }

@@ -107,25 +107,36 @@ uint64_t feature_key(const TriangleContact& c) {
 }
 }  // namespace
 
-void ContactMemory::begin_step() {
-  previous_.swap(current_);
-  current_.clear();
-  std::sort(previous_.begin(), previous_.end(),
-            [](const Entry& a, const Entry& b) { return a.grain < b.grain; });
+void ContactMemory::begin_step(int lanes) {
+  previous_.clear();
+  for (Lane& l : lanes_) {
+    previous_.insert(previous_.end(), l.current.begin(), l.current.end());
+    l.current.clear();
+  }
+  lanes_.resize(std::max(1, lanes));
+  // Stable: a grain's entries keep their order (they come from one lane).
+  std::stable_sort(previous_.begin(), previous_.end(),
+                   [](const Entry& a, const Entry& b) { return a.grain < b.grain; });
   for (auto& e : previous_) e.continued = false;
+}
+
+std::size_t ContactMemory::size() const {
+  std::size_t n = 0;
+  for (const Lane& l : lanes_) n += l.current.size();
+  return n;
 }
 
 std::span<ContactHistory<3>> ContactMemory::springs(int64_t grain,
                                                     std::span<const TriangleContact> contacts,
-                                                    double radius) {
-  std::vector<ContactHistory<3>>& out = springs_;
+                                                    double radius, int lane) {
+  std::vector<ContactHistory<3>>& out = lanes_[lane].springs;
   out.assign(contacts.size(), ContactHistory<3>{});
   auto lo = std::lower_bound(previous_.begin(), previous_.end(), grain,
                              [](const Entry& e, int64_t g) { return e.grain < g; });
   auto hi = lo;
   while (hi != previous_.end() && hi->grain == grain) ++hi;
   if (lo == hi) return out;
-  std::vector<char>& found = found_;
+  std::vector<char>& found = lanes_[lane].found;
   found.assign(contacts.size(), 0);
   for (std::size_t k = 0; k < contacts.size(); ++k)
     for (auto it = lo; it != hi; ++it)
@@ -154,19 +165,24 @@ std::span<ContactHistory<3>> ContactMemory::springs(int64_t grain,
   return out;
 }
 
-void ContactMemory::store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h) {
-  current_.push_back({grain, feature_key(c), c.point, h, false});
+void ContactMemory::store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h,
+                          int lane) {
+  lanes_[lane].current.push_back({grain, feature_key(c), c.point, h, false});
 }
 
-GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
-                                 std::span<const Vec3> v_mem, std::span<Vec3> f_mem,
-                                 int64_t grain_id, const Grain& g,
-                                 std::span<const TriangleContact> contacts,
-                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                                 ContactMemory& memory) {
+namespace {
+
+// The contact forces of one grain; add_reaction(vertex, force) takes the
+// membrane's share.
+template <class AddReaction>
+GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                          std::span<const Vec3> v_mem, AddReaction&& add_reaction, int64_t grain_id,
+                          const Grain& g, std::span<const TriangleContact> contacts,
+                          const ViscoelasticHertz::Coeffs& coeffs, double dt, ContactMemory& memory,
+                          int lane) {
   GrainForce out;
   if (contacts.empty()) return out;
-  const std::span<ContactHistory<3>> springs = memory.springs(grain_id, contacts, g.radius);
+  const std::span<ContactHistory<3>> springs = memory.springs(grain_id, contacts, g.radius, lane);
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const TriangleContact& c = contacts[k];
     const auto& tri = mesh.triangles[c.triangle];
@@ -192,11 +208,35 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
     const Vec3 f = cf.fn * kin.n + cf.ft;
     out.force += f;
     out.torque += arm * (-kin.n.cross(cf.ft));
-    for (int i = 0; i < 3; ++i) f_mem[tri[i]] -= c.w[i] * f;
-    memory.store(grain_id, c, springs[k]);
+    for (int i = 0; i < 3; ++i) add_reaction(tri[i], Vec3(-c.w[i] * f));
+    memory.store(grain_id, c, springs[k], lane);
     ++out.contacts;
   }
   return out;
+}
+
+}  // namespace
+
+GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                                 std::span<const Vec3> v_mem, std::span<Vec3> f_mem,
+                                 int64_t grain_id, const Grain& g,
+                                 std::span<const TriangleContact> contacts,
+                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                 ContactMemory& memory) {
+  return contact_forces(
+      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { f_mem[v] += f; }, grain_id, g, contacts,
+      coeffs, dt, memory, 0);
+}
+
+GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                                 std::span<const Vec3> v_mem,
+                                 std::vector<std::pair<int, Vec3>>& reactions, int64_t grain_id,
+                                 const Grain& g, std::span<const TriangleContact> contacts,
+                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                 ContactMemory& memory, int lane) {
+  return contact_forces(
+      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { reactions.emplace_back(v, f); }, grain_id, g,
+      contacts, coeffs, dt, memory, lane);
 }
 
 Eigen::Vector3i TriangleGrid::cell_of(const Vec3& p) const {
@@ -236,15 +276,27 @@ void TriangleGrid::build(const Mesh& mesh, std::span<const Vec3> x, double cell)
   list_.assign(start_.back(), -1);
   std::vector<int> fill(start_.begin(), start_.end() - 1);
   for (int t = 0; t < nt; ++t) for_cells(t, [&](int c) { list_[fill[c]++] = t; });
-  stamp_.assign(mesh.num_triangles(), 0);
-  query_id_ = 0;
+  centroid_.resize(mesh.num_triangles());
+  bound_.resize(mesh.num_triangles());
+  for (int t = 0; t < nt; ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 c = (x[tri[0]] + x[tri[1]] + x[tri[2]]) / 3.0;
+    centroid_[t] = c;
+    bound_[t] = std::sqrt(std::max({(x[tri[0]] - c).squaredNorm(), (x[tri[1]] - c).squaredNorm(),
+                                    (x[tri[2]] - c).squaredNorm()}));
+  }
 }
 
-void TriangleGrid::query(const Vec3& centre, double radius, std::vector<int>& out) const {
+void TriangleGrid::query(const Vec3& centre, double radius, std::vector<int>& out,
+                         Scratch& scratch) const {
   out.clear();
-  if (++query_id_ == 0) {  // wrapped: reset the stamps
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_id_ = 1;
+  if (scratch.stamp.size() != centroid_.size()) {
+    scratch.stamp.assign(centroid_.size(), 0);
+    scratch.id = 0;
+  }
+  if (++scratch.id == 0) {  // wrapped: reset the stamps
+    std::fill(scratch.stamp.begin(), scratch.stamp.end(), 0);
+    scratch.id = 1;
   }
   const Vec3 r = Vec3::Constant(radius);
   const Eigen::Vector3i a = cell_of(centre - r), b = cell_of(centre + r);
@@ -252,11 +304,15 @@ void TriangleGrid::query(const Vec3& centre, double radius, std::vector<int>& ou
     for (int j = a.y(); j <= b.y(); ++j)
       for (int k = a.z(); k <= b.z(); ++k) {
         const int c = (k * dims_.y() + j) * dims_.x() + i;
-        for (int q = start_[c]; q < start_[c + 1]; ++q)
-          if (stamp_[list_[q]] != query_id_) {
-            stamp_[list_[q]] = query_id_;
-            out.push_back(list_[q]);
-          }
+        for (int q = start_[c]; q < start_[c + 1]; ++q) {
+          const int t = list_[q];
+          if (scratch.stamp[t] == scratch.id) continue;
+          scratch.stamp[t] = scratch.id;
+          // No point of the triangle is within radius of the centre when its
+          // bounding sphere is not (most candidates of a grain near the mesh).
+          const double reach = radius + bound_[t];
+          if ((centre - centroid_[t]).squaredNorm() < reach * reach) out.push_back(t);
+        }
       }
 }
 

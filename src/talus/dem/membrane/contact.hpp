@@ -66,19 +66,25 @@ inline void select_contacts(const Mesh& mesh, std::span<const Vec3> x, const Vec
 // was nearest, if it was within the grain radius. Without this, every crossing
 // of a triangle boundary would reset friction (the oscillation at the mesh
 // period that the triangle model is meant to remove).
+//
+// Lanes: grains may be handled by several threads at once, each grain by one
+// lane in a step. springs() and store() of different lanes touch different
+// data (a grain's previous entries, the lane's own buffers), so lanes may run
+// concurrently; begin_step() joins the lanes in lane order, so the result does
+// not depend on which thread ran which lane.
 class ContactMemory {
  public:
   // Call once per step before the first contact: this step's springs become
-  // the previous ones.
-  void begin_step();
+  // the previous ones; `lanes` lanes are open for this step.
+  void begin_step(int lanes = 1);
   // Springs of all contacts of one grain (exact key first, then transfers),
   // zero for new contacts, one per contact. They live in a buffer of the
-  // memory, valid until the next call. Call once per grain and step, then
-  // store() each updated spring.
+  // lane, valid until its next call. Call once per grain and step, then
+  // store() each updated spring in the same lane.
   std::span<ContactHistory<3>> springs(int64_t grain, std::span<const TriangleContact> contacts,
-                                       double radius);
-  void store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h);
-  std::size_t size() const { return current_.size(); }
+                                       double radius, int lane = 0);
+  void store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h, int lane = 0);
+  std::size_t size() const;
 
  private:
   struct Entry {
@@ -88,10 +94,14 @@ class ContactMemory {
     ContactHistory<3> history;
     bool continued;
   };
-  std::vector<Entry> previous_, current_;
-  // Buffers of springs(), kept between calls so that they allocate only while they grow.
-  std::vector<ContactHistory<3>> springs_;
-  std::vector<char> found_;
+  struct Lane {
+    std::vector<Entry> current;
+    // Buffers of springs(), kept between calls so that they allocate only while they grow.
+    std::vector<ContactHistory<3>> springs;
+    std::vector<char> found;
+  };
+  std::vector<Entry> previous_;
+  std::vector<Lane> lanes_ = std::vector<Lane>(1);
 };
 
 // A sphere as the contact sees it.
@@ -115,22 +125,42 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  std::span<const TriangleContact> contacts,
                                  const ViscoelasticHertz::Coeffs& coeffs, double dt,
                                  ContactMemory& memory);
+// The same for one lane of a multi-threaded pass: the reactions are appended
+// to `reactions` as (vertex, force) for the caller to add in a fixed order.
+GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                                 std::span<const Vec3> v_mem,
+                                 std::vector<std::pair<int, Vec3>>& reactions, int64_t grain_id,
+                                 const Grain& g, std::span<const TriangleContact> contacts,
+                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                 ContactMemory& memory, int lane);
 
 // Candidate triangles near spheres: a uniform grid of triangle bounding boxes,
 // rebuilt whenever the membrane has moved (cheap: one pass over the triangles).
 class TriangleGrid {
  public:
+  // Marks of the triangles one query has seen; one per thread.
+  struct Scratch {
+    std::vector<int> stamp;
+    int id = 0;
+  };
   void build(const Mesh& mesh, std::span<const Vec3> x, double cell);
-  // Triangles whose cells overlap the sphere's bounding box (each once).
-  void query(const Vec3& centre, double radius, std::vector<int>& out) const;
+  // Triangles whose cells overlap the sphere's bounding box and whose
+  // bounding sphere (centroid, farthest corner) meets the sphere, each once.
+  void query(const Vec3& centre, double radius, std::vector<int>& out) const {
+    query(centre, radius, out, scratch_);
+  }
+  // The same with the caller's scratch: queries with different scratches may
+  // run concurrently.
+  void query(const Vec3& centre, double radius, std::vector<int>& out, Scratch& scratch) const;
 
  private:
   Vec3 origin_ = Vec3::Zero();
   double cell_ = 1;
   Eigen::Vector3i dims_ = Eigen::Vector3i::Ones();
   std::vector<int> start_, list_;
-  mutable std::vector<int> stamp_;
-  mutable int query_id_ = 0;
+  std::vector<Vec3> centroid_;
+  std::vector<double> bound_;  // distance from the centroid to the farthest corner
+  mutable Scratch scratch_;
   Eigen::Vector3i cell_of(const Vec3& p) const;
 };
 

@@ -28,21 +28,34 @@ RestShape rest_shape(const Mesh& mesh, std::span<const Vec3> x) {
   return r;
 }
 
+namespace {
+
+// Force on edge k's first particle (the second gets its negative); zero for
+// coincident particles, which have no direction.
+inline Vec3 stretching_force(const Edge& e, double rest_length, double stiffness,
+                             double damping_ratio, std::span<const Vec3> x, std::span<const Vec3> v,
+                             std::span<const double> mass) {
+  const int i = e.a, j = e.b;
+  const Vec3 d = x[i] - x[j];
+  const double r = d.norm();
+  if (!(r > 0)) return Vec3::Zero();
+  const Vec3 n = d / r;
+  const double m_eff = mass[i] * mass[j] / (mass[i] + mass[j]);
+  const double damp = 2.0 * damping_ratio * std::sqrt(stiffness * m_eff);
+  return -(stiffness * (r - rest_length) + damp * n.dot(v[i] - v[j])) * n;
+}
+
+}  // namespace
+
 void add_stretching_forces(std::span<const Edge> edges, std::span<const double> rest_length,
                            double stiffness, double damping_ratio, std::span<const Vec3> x,
                            std::span<const Vec3> v, std::span<const double> mass,
                            std::span<Vec3> f) {
   for (std::size_t k = 0; k < edges.size(); ++k) {
-    const int i = edges[k].a, j = edges[k].b;
-    const Vec3 d = x[i] - x[j];
-    const double r = d.norm();
-    if (!(r > 0)) continue;  // coincident particles: no direction
-    const Vec3 n = d / r;
-    const double m_eff = mass[i] * mass[j] / (mass[i] + mass[j]);
-    const double damp = 2.0 * damping_ratio * std::sqrt(stiffness * m_eff);
-    const Vec3 fi = -(stiffness * (r - rest_length[k]) + damp * n.dot(v[i] - v[j])) * n;
-    f[i] += fi;
-    f[j] -= fi;
+    const Vec3 fi =
+        stretching_force(edges[k], rest_length[k], stiffness, damping_ratio, x, v, mass);
+    f[edges[k].a] += fi;
+    f[edges[k].b] -= fi;
   }
 }
 
@@ -70,20 +83,38 @@ bool bending_element(const Vec3& r1, const Vec3& r2, const Vec3& r3, const Vec3&
   return true;
 }
 
+namespace {
+
+// The bending forces of interior edge e on (opp0, opp1, a, b); false when the
+// element gives none (a boundary edge, or a triangle without area).
+inline bool bending_forces(const Edge& e, double rest_sin_half, double k_elastic,
+                           double k_dissipative, std::span<const Vec3> x, std::span<const Vec3> v,
+                           std::array<Vec3, 4>& out) {
+  if (!e.interior()) return false;
+  const int id[4] = {e.opp0, e.opp1, e.a, e.b};
+  BendingElement b;
+  if (!bending_element(x[id[0]], x[id[1]], x[id[2]], x[id[3]], b)) return false;
+  double rate = 0.0;  // sum u_i . v_i (= -d theta / dt)
+  for (int c = 0; c < 4; ++c) rate += b.u[c].dot(v[id[c]]);
+  const double scale = k_elastic * b.shape_factor * (b.sin_half - rest_sin_half) -
+                       k_dissipative * b.edge_length * rate;
+  for (int c = 0; c < 4; ++c) out[c] = scale * b.u[c];
+  return true;
+}
+
+}  // namespace
+
 void add_bending_forces(std::span<const Edge> edges, std::span<const double> rest_sin_half,
                         double k_elastic, double k_dissipative, std::span<const Vec3> x,
                         std::span<const Vec3> v, std::span<Vec3> f) {
+  std::array<Vec3, 4> fb;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const Edge& e = edges[k];
-    if (!e.interior()) continue;
-    const int id[4] = {e.opp0, e.opp1, e.a, e.b};
-    BendingElement b;
-    if (!bending_element(x[id[0]], x[id[1]], x[id[2]], x[id[3]], b)) continue;
-    double rate = 0.0;  // sum u_i . v_i (= -d theta / dt)
-    for (int c = 0; c < 4; ++c) rate += b.u[c].dot(v[id[c]]);
-    const double scale = k_elastic * b.shape_factor * (b.sin_half - rest_sin_half[k]) -
-                         k_dissipative * b.edge_length * rate;
-    for (int c = 0; c < 4; ++c) f[id[c]] += scale * b.u[c];
+    if (!bending_forces(e, rest_sin_half[k], k_elastic, k_dissipative, x, v, fb)) continue;
+    f[e.opp0] += fb[0];
+    f[e.opp1] += fb[1];
+    f[e.a] += fb[2];
+    f[e.b] += fb[3];
   }
 }
 
@@ -144,10 +175,45 @@ Membrane make_membrane(Mesh mesh, const MembraneParams& params) {
   m.v.assign(m.x.size(), Vec3::Zero());
   m.f.assign(m.x.size(), Vec3::Zero());
   m.fixed.assign(m.x.size(), 0);
+  m.follows.assign(m.x.size(), -1);
+  m.anchor = m.x;
   m.rest = rest_shape(mesh, m.x);
   m.mass = vertex_masses(mesh, params.density, params.thickness);
   m.mesh = std::move(mesh);
   return m;
+}
+
+void add_internal_forces_tasks(Membrane& m, EdgeForces& buffer) {
+  const auto& p = m.params;
+  const auto& edges = m.mesh.edges;
+  const int ne = static_cast<int>(edges.size());
+  const double k = spring_constant(p.youngs_modulus, p.thickness);
+  const bool bend = p.bending_elastic != 0 || p.bending_dissipative != 0;
+  buffer.stretch.resize(ne);
+  buffer.bend.resize(ne);
+  buffer.has_bend.resize(ne);
+  const std::span<const Vec3> x = m.x, v = m.v;
+#pragma omp taskloop num_tasks(8) default(shared)
+  for (int e = 0; e < ne; ++e) {
+    buffer.stretch[e] =
+        stretching_force(edges[e], m.rest.length[e], k, p.spring_damping, x, v, m.mass);
+    buffer.has_bend[e] =
+        bend && bending_forces(edges[e], m.rest.sin_half_angle[e], p.bending_elastic,
+                               p.bending_dissipative, x, v, buffer.bend[e]);
+  }
+  // In add_internal_forces' order: the same bits.
+  for (int e = 0; e < ne; ++e) {
+    m.f[edges[e].a] += buffer.stretch[e];
+    m.f[edges[e].b] -= buffer.stretch[e];
+  }
+  for (int e = 0; e < ne; ++e) {
+    if (!buffer.has_bend[e]) continue;
+    m.f[edges[e].opp0] += buffer.bend[e][0];
+    m.f[edges[e].opp1] += buffer.bend[e][1];
+    m.f[edges[e].a] += buffer.bend[e][2];
+    m.f[edges[e].b] += buffer.bend[e][3];
+  }
+  if (p.pressure != 0) add_pressure_forces(m.mesh.triangles, p.pressure, m.x, m.f);
 }
 
 void add_internal_forces(Membrane& m) {

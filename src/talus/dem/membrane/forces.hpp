@@ -2,8 +2,8 @@
 // Internal forces of a DEM membrane (spec/membranes-and-jamming.md, Götz 2024
 // §3.2.1-3.2.4) as kernels over arrays: they read positions and velocities of
 // the membrane particles and add to their forces, with no state of their own.
-// The loops scatter to shared vertices, so they run on one thread; a caller
-// that wants threads colours the edges first.
+// The loops scatter to shared vertices, so they run on one thread;
+// add_internal_forces_tasks computes the per-edge terms on several.
 #include <array>
 #include <cmath>
 #include <span>
@@ -104,11 +104,26 @@ struct Membrane {
   std::vector<double> mass;
   std::vector<Vec3> x, v, f;
   std::vector<char> fixed;
+  // Fixed particles that follow a wall's translation (the triaxial plates):
+  // index into the run's walls, -1 for none; x = anchor + the wall's displacement.
+  std::vector<int> follows;
+  std::vector<Vec3> anchor;
 };
 // Rest state and masses from the mesh as it is; zero velocities.
 Membrane make_membrane(Mesh mesh, const MembraneParams& params);
 // Adds stretching, bending and pressure forces to m.f (does not clear it).
 void add_internal_forces(Membrane& m);
+// Per-edge forces of add_internal_forces_tasks, kept between calls.
+struct EdgeForces {
+  std::vector<Vec3> stretch;
+  std::vector<std::array<Vec3, 4>> bend;
+  std::vector<char> has_bend;
+};
+// The same forces, bit for bit: the per-edge work (norms, the bending
+// geometry, atan2, sin) runs as OpenMP tasks into `buffer`, which the calling
+// thread then adds to m.f in add_internal_forces' order. Inside a parallel
+// region the team's waiting threads take the tasks; outside, the caller runs them.
+void add_internal_forces_tasks(Membrane& m, EdgeForces& buffer);
 double critical_time_step(const Membrane& m);
 
 }  // namespace talus::dem::membrane

@@ -37,16 +37,23 @@ Mesh generate(const MembraneSpec& s) {
   return {};
 }
 
-// The end rings of a cylinder: vertices on its mantle (at the radius) at its
+// The end ring of a cylinder: vertices on its mantle (at the radius) at its
 // lowest or highest z (caps have smaller radii except their outer ring).
-void fix_ring(const MembraneSpec& s, Membrane& m, bool top) {
+std::vector<int> ring(const MembraneSpec& s, const Membrane& m, bool top) {
   const double tol = 1e-9 * std::max(s.radius, s.height);
   const double z_end = s.origin.z() + (top ? s.height : 0.0);
+  std::vector<int> out;
   for (std::size_t i = 0; i < m.x.size(); ++i) {
     const Vec3 d = m.x[i] - s.origin;
     const double r = std::hypot(d.x(), d.y());
-    if (std::abs(r - s.radius) < tol && std::abs(m.x[i].z() - z_end) < tol) m.fixed[i] = 1;
+    if (std::abs(r - s.radius) < tol && std::abs(m.x[i].z() - z_end) < tol)
+      out.push_back(static_cast<int>(i));
   }
+  return out;
+}
+
+void fix_ring(const MembraneSpec& s, Membrane& m, bool top) {
+  for (int i : ring(s, m, top)) m.fixed[i] = 1;
 }
 
 }  // namespace
@@ -89,6 +96,30 @@ MembraneBody make_membrane_body(const MembraneSpec& s, int material) {
         "[[membranes]] '{}': 'fixed' selects no membrane particle (a closed mesh has no edge)",
         s.name));
   return b;
+}
+
+}  // namespace talus::dem::membrane
+
+namespace talus::dem::membrane {
+
+void attach_rings(MembraneBody& b, const MembraneSpec& s,
+                  const std::vector<geometry::Wall>& walls) {
+  auto& m = b.body;
+  for (const bool top : {false, true}) {
+    const std::string& name = top ? s.top_ring_wall : s.bottom_ring_wall;
+    if (name.empty()) continue;
+    auto it = std::find_if(walls.begin(), walls.end(),
+                           [&](const geometry::Wall& w) { return w.name == name; });
+    if (it == walls.end())
+      throw InputError(fmt::format("[[membranes]] '{}': {}_ring_wall: no wall named '{}'", s.name,
+                                   top ? "top" : "bottom", name));
+    const int w = static_cast<int>(it - walls.begin());
+    for (int i : ring(s, m, top)) {
+      m.fixed[i] = 1;
+      m.follows[i] = w;
+      m.anchor[i] = m.x[i] - it->displacement(0.0);
+    }
+  }
 }
 
 }  // namespace talus::dem::membrane

@@ -15,6 +15,7 @@ MembraneStep::MembraneStep(const DemSystem<3>& s) {
                                                 pair_coefficients(s.contact, grain, wall)));
     }
   grids_.resize(s.membranes.size());
+  edge_forces_.resize(s.membranes.size());
 }
 
 void MembraneStep::kick(DemSystem<3>& s, double h) const {
@@ -30,11 +31,42 @@ void MembraneStep::step(DemSystem<3>& s) {
   kick(s, 0.5 * dt);
   for (auto& mb : s.membranes) {
     auto& m = mb.body;
-    for (std::size_t i = 0; i < m.x.size(); ++i)
-      if (!m.fixed[i]) m.x[i] += dt * m.v[i];
+    for (std::size_t i = 0; i < m.x.size(); ++i) {
+      if (!m.fixed[i]) {
+        m.x[i] += dt * m.v[i];
+      } else if (m.follows[i] >= 0) {  // the walls are already at the new time
+        const auto& w = s.walls[m.follows[i]];
+        m.x[i] = m.anchor[i] + w.displacement(s.time);
+        m.v[i] = w.velocity_at(m.x[i], s.time);
+      }
+    }
   }
   compute_forces(s);
   kick(s, 0.5 * dt);
+}
+
+void MembraneStep::contact_lane(DemSystem<3>& s, int k, int lane, std::size_t begin,
+                                std::size_t end, const Vec3& lo, const Vec3& hi) {
+  auto& p = s.particles;
+  auto& mb = s.membranes[k];
+  auto& m = mb.body;
+  Lane& L = lanes_[lane];
+  for (std::size_t i = begin; i < end; ++i) {
+    const Vec3& c = p.x[i];
+    if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
+    grids_[k].query(c, p.r[i], L.candidates, L.scratch);
+    if (L.candidates.empty()) continue;
+    select_contacts(m.mesh, m.x, c, p.r[i], L.candidates, L.selected, L.touched);
+    if (L.selected.empty()) continue;
+    const Grain g{c, p.v[i], p.w[i], p.r[i], p.m[i]};
+    const GrainForce gf =
+        grain_membrane_forces(m.mesh, m.x, m.v, L.reactions, p.id[i], g, L.selected,
+                              coeffs(p.material[i], k), s.dt, mb.memory, lane);
+    force_[i] += gf.force;
+    if (!s.contact.lock_rotation) torque_[i] += gf.torque;
+    contacts_[i] += gf.contacts;
+    L.contacts += gf.contacts;
+  }
 }
 
 void MembraneStep::compute_forces(DemSystem<3>& s) {
@@ -49,9 +81,8 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
     std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
-    add_internal_forces(m);
-    mb.memory.begin_step();
-    mb.contacts = 0;
+    add_internal_forces_tasks(m, edge_forces_[k]);
+    mb.memory.begin_step(kLanes);
     // The triangles' bounding box, grown by the largest grain radius: grains
     // outside it cannot touch (most grains, most steps).
     Vec3 lo = Vec3::Constant(1e300), hi = -lo;
@@ -61,20 +92,18 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     // Rebuilt every step: one pass over the triangles, cheaper than the
     // internal forces, and never stale.
     grids_[k].build(m.mesh, m.x, 2.0 * r_max);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3& c = p.x[i];
-      if ((c.array() < lo.array()).any() || (c.array() > hi.array()).any()) continue;
-      grids_[k].query(c, p.r[i], candidates_);
-      if (candidates_.empty()) continue;
-      select_contacts(m.mesh, m.x, c, p.r[i], candidates_, selected_, touched_);
-      if (selected_.empty()) continue;
-      const Grain g{c, p.v[i], p.w[i], p.r[i], p.m[i]};
-      const GrainForce gf = grain_membrane_forces(m.mesh, m.x, m.v, m.f, p.id[i], g, selected_,
-                                                  coeffs(p.material[i], k), s.dt, mb.memory);
-      force_[i] += gf.force;
-      if (!s.contact.lock_rotation) torque_[i] += gf.torque;
-      contacts_[i] += gf.contacts;
-      mb.contacts += gf.contacts;
+    // Tasks for the team's other threads (they wait at the end of the
+    // caller's omp single); outside a parallel region the loop runs here.
+#pragma omp taskloop num_tasks(kLanes) default(shared)
+    for (int lane = 0; lane < kLanes; ++lane) {
+      lanes_[lane].reactions.clear();
+      lanes_[lane].contacts = 0;
+      contact_lane(s, k, lane, n * lane / kLanes, n * (lane + 1) / kLanes, lo, hi);
+    }
+    mb.contacts = 0;
+    for (const Lane& L : lanes_) {
+      for (const auto& [v, f] : L.reactions) m.f[v] += f;
+      mb.contacts += L.contacts;
     }
     mb.reaction.setZero();
     for (std::size_t i = 0; i < m.x.size(); ++i)

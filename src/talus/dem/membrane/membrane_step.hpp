@@ -2,9 +2,14 @@
 // The membranes' part of a DEM step (3D): velocity Verlet of the membrane
 // particles, their internal and pressure forces, and the grain-membrane
 // contacts, whose forces on the grains are kept per grain until the stepper
-// adds them before the grains' second half kick. Everything here runs on one
-// thread (the kernels scatter to shared vertices); the stepper calls it inside
-// its serial section, after the grains have drifted.
+// adds them before the grains' second half kick. The stepper calls it inside
+// its serial section (omp single), after the grains have drifted. The
+// grain-membrane contacts, most of the work, run as OpenMP tasks that the
+// waiting threads of the team pick up: the grains are cut into kLanes fixed
+// index ranges, each with its own reaction list and contact-memory lane, and
+// the reactions are added to the membrane in lane order, so the result is the
+// same for any number of threads. The internal forces' per-edge terms run as
+// tasks too, and are added to the membrane particles in edge order on one thread.
 #include <span>
 #include <vector>
 
@@ -35,6 +40,9 @@ class MembraneStep {
     p.wall_contacts[i] += contacts_[i];
   }
 
+  // The membranes' contact force on grain i from the last compute_forces.
+  const Vec3& grain_force(int i) const { return force_[i]; }
+
   // The two bounds of the run's stable step (Stepper::critical_time_step) that
   // the membranes add. Internal: min over membranes of
   // membrane::critical_time_step. Contact: min over membranes and grain
@@ -53,12 +61,26 @@ class MembraneStep {
   }
   int num_membranes() const { return static_cast<int>(grids_.size()); }
 
+  // Grains [begin, end) against membrane k in lane `lane`.
+  void contact_lane(DemSystem<3>& s, int k, int lane, std::size_t begin, std::size_t end,
+                    const Vec3& lo, const Vec3& hi);
+
+  // Fixed, not the thread count: the order of the sums depends on it only.
+  static constexpr int kLanes = 16;
+  struct Lane {
+    std::vector<int> candidates;
+    std::vector<TriangleContact> selected, touched;  // select_contacts' out and scratch
+    std::vector<std::pair<int, Vec3>> reactions;     // (membrane particle, force)
+    TriangleGrid::Scratch scratch;
+    int contacts = 0;
+  };
+
   std::vector<ViscoelasticHertz::Coeffs> coeffs_;
   std::vector<TriangleGrid> grids_;
+  std::vector<EdgeForces> edge_forces_;
   std::vector<Vec3> force_, torque_;
   std::vector<int> contacts_;
-  std::vector<int> candidates_;
-  std::vector<TriangleContact> selected_, touched_;  // select_contacts' out and scratch
+  std::vector<Lane> lanes_ = std::vector<Lane>(kLanes);
 };
 
 }  // namespace talus::dem::membrane
