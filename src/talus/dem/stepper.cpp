@@ -55,7 +55,7 @@ class Stepper final : public StepperBase<D> {
         if constexpr (D == 3)
           if (membranes_) membranes_->compute_forces(s_);
       }
-      compute_forces(nullptr, false);
+      compute_forces(nullptr);
     }
     close_forces();
   }
@@ -81,13 +81,7 @@ class Stepper final : public StepperBase<D> {
   void advance(int64_t steps) override {
     error_ = nullptr;
 #pragma omp parallel num_threads(s_.threads)
-    {
-      // A step's finish pass also drifts each particle into the next step
-      // (except after the chunk's last step: outputs read the step's end);
-      // `moved` carries what that drift found, < 0 when it was not done.
-      double moved = -1.0;
-      for (int64_t k = 0; k < steps && !error_; ++k) moved = one_step(moved, k + 1 < steps);
-    }
+    for (int64_t k = 0; k < steps && !error_; ++k) one_step();
     if (step_open_) close_step();
     // Exceptions may not cross the parallel region: they are carried out here.
     if (error_) std::rethrow_exception(error_);
@@ -132,22 +126,21 @@ class Stepper final : public StepperBase<D> {
   }
 
  private:
-  // One velocity-Verlet step; called by every thread of the team. `moved` is
-  // this thread's largest squared displacement since the last build when the
-  // previous step's finish pass already drifted its particles, else < 0. With
-  // `drift_next` the finish pass drifts them into the next step; returns what
-  // that drift found (< 0 without it).
-  double one_step(double moved, bool drift_next) {
+  // One velocity-Verlet step; called by every thread of the team.
+  void one_step() {
     auto& p = s_.particles;
     const double dt = s_.dt;
     const Kick half = kick_params(0.5 * dt);
     const int n = static_cast<int>(p.size());
-    if (moved < 0.0) {
-      // First half kick and drift in one pass over the particles.
-      moved = 0.0;
-      const Vec* x_ref = s_.neighbours.reference_positions().data();
-      const auto [i0, i1] = partition_.particle_range(n);
-      for (int i = i0; i < i1; ++i) moved = kick_and_drift(p, i, half, dt, x_ref, moved);
+    double moved = 0.0;
+    // First half kick and drift in one pass over the particles.
+    const auto [i0, i1] = partition_.particle_range(n);
+    for (int i = i0; i < i1; ++i) {
+      kick_one(p, i, half);
+      p.x[i] += dt * p.v[i];
+      const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
+      // A NaN position counts as infinitely far: the rebuild then stops the run.
+      moved = std::isnan(d2) ? std::numeric_limits<double>::infinity() : std::max(moved, d2);
     }
 #pragma omp critical(talus_moved)
     max_moved_ = moved <= max_moved_ ? max_moved_ : moved;
@@ -175,8 +168,8 @@ class Stepper final : public StepperBase<D> {
           if (membranes_) membranes_->step(s_);
       }
     }
-    if (error_) return -1.0;
-    return compute_forces(&half, drift_next);
+    if (error_) return;
+    compute_forces(&half);
   }
 
   // The step's serial set-up, once the particles have drifted.
@@ -229,17 +222,6 @@ class Stepper final : public StepperBase<D> {
     if (k.rotate) p.w[i] += (k.h * p.inv_I[i]) * t;
   }
   static double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
-
-  // The first half kick and the drift of particle i; returns the larger of
-  // `moved` and its squared displacement since the last build. A NaN position
-  // counts as infinitely far: the rebuild then stops the run.
-  TALUS_HOT static double kick_and_drift(Particles<D>& p, int i, const Kick& half, double dt,
-                                         const Vec* x_ref, double moved) {
-    kick_one(p, i, half);
-    p.x[i] += dt * p.v[i];
-    const double d2 = (p.x[i] - x_ref[i]).squaredNorm();
-    return std::isnan(d2) ? std::numeric_limits<double>::infinity() : std::max(moved, d2);
-  }
 
   // Moves walls to the current time; true when a wall appeared or vanished.
   bool update_walls(bool force) {
@@ -375,21 +357,15 @@ class Stepper final : public StepperBase<D> {
 
   // Pair forces, then wall forces and the optional half kick `then_kick`
   // (each particle gets it as soon as its force is complete); called by every
-  // thread of the team after prepare_step. With `drift_next` (and a kick)
-  // each finished particle also gets the next step's first half kick and
-  // drift: its own operations in the same order as in a pass of their own, so
-  // the same bits, one pass over the particles fewer. Returns the thread's
-  // largest squared displacement since the last build (< 0 without the drift).
-  // Ends without a barrier: a thread goes on with its own particles, the
-  // caller closes the forces once all threads are done.
-  double compute_forces(const Kick* then_kick, bool drift_next) {
+  // thread of the team after prepare_step. Ends without a barrier: a thread
+  // goes on with its own particles, the caller closes the forces once all
+  // threads are done.
+  void compute_forces(const Kick* then_kick) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int n = static_cast<int>(p.size());
     const std::size_t np = nl.pairs.size();
     int64_t touching = 0;
-    const bool drift = then_kick && drift_next;
-    double moved = drift ? 0.0 : -1.0;
     if (omp_get_num_threads() <= 1) {
       for (int i = 0; i < n; ++i) {
         p.f[i] = zero_of<Vec>();
@@ -400,7 +376,7 @@ class Stepper final : public StepperBase<D> {
                                p.f.data(), p.t.data(), p.contacts.data(),
                                0,          n - 1};
       touching = scatter_pairs(0, np, out);
-      finish_particles(then_kick, drift, 0, n, moved);
+      finish_particles(then_kick, 0, n);
     } else {
       // Each thread scatters its share of the pairs: forces on particles no
       // other thread's pairs touch straight into the particle arrays, the
@@ -416,14 +392,13 @@ class Stepper final : public StepperBase<D> {
       // once those threads are done, the rest.
       const int split = std::clamp(buf.wait_hi + 1, buf.p0, buf.p1);
       partition_.sum_buffers(p, split, buf.p1);
-      finish_particles(then_kick, drift, split, buf.p1, moved);
+      finish_particles(then_kick, split, buf.p1);
       partition_.wait_for_earlier(tid, force_pass_);
       partition_.sum_buffers(p, buf.p0, split);
-      finish_particles(then_kick, drift, buf.p0, split, moved);
+      finish_particles(then_kick, buf.p0, split);
     }
 #pragma omp atomic
     pair_touching_ += touching;
-    return moved;
   }
 
   // Forces of pairs [k0, k1) added into `out`; returns the number of
@@ -495,10 +470,12 @@ class Stepper final : public StepperBase<D> {
     thread_local std::vector<char> hit;
     thread_local std::vector<const geometry::Primitive*> prims;
     thread_local std::vector<int> walls;
-    near.resize(count);
-    hit.resize(count);
-    prims.resize(count);
-    walls.resize(count);
+    if (static_cast<int>(near.size()) < count) {  // grow only: resize is a call per particle
+      near.resize(count);
+      hit.resize(count);
+      prims.resize(count);
+      walls.resize(count);
+    }
     for (int j = 0; j < count; ++j) {
       const int prim = nl.wall_prim[first + j];
       prims[j] = &s_.primitives[prim];
@@ -513,63 +490,80 @@ class Stepper final : public StepperBase<D> {
     return {near.data(), hit.data()};
   }
 
+  // The contact of particle i with wall candidate k (closest point c, which
+  // touches): force and torque on the particle and on the wall (this thread's
+  // sums `acc`). Returns 1, the contacts it adds.
+  TALUS_HOT int wall_contact(int i, int k, const geometry::Closest<D>& c, Vec3* acc) {
+    auto& p = s_.particles;
+    auto& nl = s_.neighbours;
+    const int w = s_.primitive_wall[nl.wall_prim[k]];
+    ContactKinematics<D> kin;
+    kin.n = c.normal;
+    kin.overlap = p.r[i] - c.distance;
+    const double ci = p.r[i] - 0.5 * kin.overlap;
+    kin.r_eff = p.r[i];
+    kin.m_eff = p.m[i];
+    kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
+    Vec vrel = p.v[i];
+    if (moving_[w])
+      vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
+    kin.vn = vrel.dot(kin.n);
+    kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
+    kin.w_rel = p.w[i];
+    ContactForce<D> cf;
+    Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
+                   nl.wall_history[k], s_.dt, cf);
+    const Vec f = cf.fn * kin.n + cf.ft;
+    p.f[i] += f;
+    p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
+    ++p.wall_contacts[i];
+    const Vec3 f3 = Space<D>::to3(f);
+    acc[2 * w] -= f3;
+    acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
+    return 1;
+  }
+
   // Particles [i0, i1) once their pair forces are complete: wall contacts,
-  // then the optional half kick and Kuen's rolling resistance, and with
-  // `drift` the next step's first half kick and drift (into `moved`).
-  void finish_particles(const Kick* then_kick, bool drift, int i0, int i1, double& moved) {
+  // then the optional half kick and Kuen's rolling resistance.
+  void finish_particles(const Kick* then_kick, int i0, int i1) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * acc_stride();
     const bool kuen_on = kuen_.enabled();
-    const Vec* x_ref = nl.reference_positions().data();
-    double moved_here = moved;
     int64_t touching = 0;
     for (int i = i0; i < i1; ++i) {
       p.wall_contacts[i] = 0;
       const int first = nl.wall_start[i], count = nl.wall_start[i + 1] - first;
-      const auto [near, hit] = wall_hits(i, first, count);
-      for (int k = first; k < first + count; ++k) {
-        const int prim = nl.wall_prim[k];
-        const int w = s_.primitive_wall[prim];
-        const geometry::Closest<D>& c = near[k - first];
-        if (!hit[k - first]) {
-          nl.wall_history[k] = ContactHistory<D>{};
-          continue;
+      if (D == 3 && count > 1) {
+        // Several candidates in 3D: a mesh's shared edges and vertices count once.
+        const auto [near, hit] = wall_hits(i, first, count);
+        for (int k = first; k < first + count; ++k) {
+          if (hit[k - first])
+            touching += wall_contact(i, k, near[k - first], acc);
+          else
+            nl.wall_history[k] = ContactHistory<D>{};
         }
-        ContactKinematics<D> kin;
-        kin.n = c.normal;
-        kin.overlap = p.r[i] - c.distance;
-        const double ci = p.r[i] - 0.5 * kin.overlap;
-        kin.r_eff = p.r[i];
-        kin.m_eff = p.m[i];
-        kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
-        Vec vrel = p.v[i];
-        if (moving_[w])
-          vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
-        kin.vn = vrel.dot(kin.n);
-        kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
-        kin.w_rel = p.w[i];
-        ContactForce<D> cf;
-        Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
-                       nl.wall_history[k], s_.dt, cf);
-        const Vec f = cf.fn * kin.n + cf.ft;
-        p.f[i] += f;
-        p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
-        ++p.wall_contacts[i];
-        ++touching;
-        const Vec3 f3 = Space<D>::to3(f);
-        acc[2 * w] -= f3;
-        acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
+      } else {
+        // Each candidate on its own (the same tests as wall_hits, without its
+        // scratch arrays: most particles have none or one).
+        for (int k = first; k < first + count; ++k) {
+          const int prim = nl.wall_prim[k];
+          geometry::Closest<D> c;
+          if (active_[s_.primitive_wall[prim]] &&
+              geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) &&
+              c.distance < p.r[i])
+            touching += wall_contact(i, k, c, acc);
+          else
+            nl.wall_history[k] = ContactHistory<D>{};
+        }
       }
       if constexpr (D == 3)
         if (membranes_) membranes_->add_to_grain(p, i);
       if (then_kick) {
         kick_one(p, i, *then_kick);
         if (kuen_on) kuen_.apply(p, i, s_.dt);
-        if (drift) moved_here = kick_and_drift(p, i, *then_kick, s_.dt, x_ref, moved_here);
       }
     }
-    moved = moved_here;
 #pragma omp atomic
     wall_touching_ += touching;
   }
