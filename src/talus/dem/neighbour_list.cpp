@@ -189,10 +189,25 @@ void NeighbourList<D>::find_walls(const Particles<D>& p,
                                : dims_[d] - 1;
       if (b < 0.0 || a > dims_[d]) c1[d] = c0[d] - 1;  // entirely outside the grid
     }
+    // A long slanted segment or a plane has a box of many cells, most of them
+    // far from it: a cell whose centre is farther than r_max + skin plus half
+    // its diagonal holds no candidate (the distance to a primitive changes no
+    // faster than the point moves), and is skipped after one test. Not for the
+    // one-sided cylinder, whose test fails beyond its surface at any distance.
+    const bool prune = prims[k].kind != geometry::PrimitiveKind::Cylinder;
+    const double cell_reach = r_max + skin_ + (0.5 * std::sqrt(double(D)) + 1e-3) * cell_size_;
     for (int cz = c0[2]; cz <= c1[2]; ++cz)
       for (int cy = c0[1]; cy <= c1[1]; ++cy)
         for (int cx = c0[0]; cx <= c1[0]; ++cx) {
           const int c = (cz * dims_[1] + cy) * dims_[0] + cx;
+          if (cell_start_[c] == cell_start_[c + 1]) continue;
+          if (prune) {
+            const int cell_index[3] = {cx, cy, cz};
+            Vec centre;
+            for (int d = 0; d < D; ++d) centre[d] = lo_[d] + (cell_index[d] + 0.5) * cell_size_;
+            geometry::Closest<D> near;
+            if (!geometry::closest_point<D>(prims[k], centre, cell_reach, near)) continue;
+          }
           for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
             geometry::Closest<D> hit;
             if (geometry::closest_point<D>(prims[k], p.x[i], p.r[i] + skin_, hit))

@@ -473,10 +473,12 @@ class Stepper final : public StepperBase<D> {
     thread_local std::vector<char> hit;
     thread_local std::vector<const geometry::Primitive*> prims;
     thread_local std::vector<int> walls;
-    near.resize(count);
-    hit.resize(count);
-    prims.resize(count);
-    walls.resize(count);
+    if (static_cast<int>(near.size()) < count) {  // grow only: resize is a call per particle
+      near.resize(count);
+      hit.resize(count);
+      prims.resize(count);
+      walls.resize(count);
+    }
     for (int j = 0; j < count; ++j) {
       const int prim = nl.wall_prim[first + j];
       prims[j] = &s_.primitives[prim];
@@ -491,6 +493,39 @@ class Stepper final : public StepperBase<D> {
     return {near.data(), hit.data()};
   }
 
+  // The contact of particle i with wall candidate k (closest point c, which
+  // touches): force and torque on the particle and on the wall (this thread's
+  // sums `acc`). Returns 1, the contacts it adds.
+  TALUS_HOT int wall_contact(int i, int k, const geometry::Closest<D>& c, Vec3* acc) {
+    auto& p = s_.particles;
+    auto& nl = s_.neighbours;
+    const int w = s_.primitive_wall[nl.wall_prim[k]];
+    ContactKinematics<D> kin;
+    kin.n = c.normal;
+    kin.overlap = p.r[i] - c.distance;
+    const double ci = p.r[i] - 0.5 * kin.overlap;
+    kin.r_eff = p.r[i];
+    kin.m_eff = p.m[i];
+    kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
+    Vec vrel = p.v[i];
+    if (moving_[w])
+      vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
+    kin.vn = vrel.dot(kin.n);
+    kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
+    kin.w_rel = p.w[i];
+    ContactForce<D> cf;
+    Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
+                   nl.wall_history[k], s_.dt, cf);
+    const Vec f = cf.fn * kin.n + cf.ft;
+    p.f[i] += f;
+    p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
+    ++p.wall_contacts[i];
+    const Vec3 f3 = Space<D>::to3(f);
+    acc[2 * w] -= f3;
+    acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
+    return 1;
+  }
+
   // Particles [i0, i1) once their pair forces are complete: wall contacts,
   // then the optional half kick and Kuen's rolling resistance.
   void finish_particles(const Kick* then_kick, int i0, int i1) {
@@ -502,39 +537,28 @@ class Stepper final : public StepperBase<D> {
     for (int i = i0; i < i1; ++i) {
       p.wall_contacts[i] = 0;
       const int first = nl.wall_start[i], count = nl.wall_start[i + 1] - first;
-      const auto [near, hit] = wall_hits(i, first, count);
-      for (int k = first; k < first + count; ++k) {
-        const int prim = nl.wall_prim[k];
-        const int w = s_.primitive_wall[prim];
-        const geometry::Closest<D>& c = near[k - first];
-        if (!hit[k - first]) {
-          nl.wall_history[k] = ContactHistory<D>{};
-          continue;
+      if (D == 3 && count > 1) {
+        // Several candidates in 3D: a mesh's shared edges and vertices count once.
+        const auto [near, hit] = wall_hits(i, first, count);
+        for (int k = first; k < first + count; ++k) {
+          if (hit[k - first])
+            touching += wall_contact(i, k, near[k - first], acc);
+          else
+            nl.wall_history[k] = ContactHistory<D>{};
         }
-        ContactKinematics<D> kin;
-        kin.n = c.normal;
-        kin.overlap = p.r[i] - c.distance;
-        const double ci = p.r[i] - 0.5 * kin.overlap;
-        kin.r_eff = p.r[i];
-        kin.m_eff = p.m[i];
-        kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
-        Vec vrel = p.v[i];
-        if (moving_[w])
-          vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
-        kin.vn = vrel.dot(kin.n);
-        kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
-        kin.w_rel = p.w[i];
-        ContactForce<D> cf;
-        Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
-                       nl.wall_history[k], s_.dt, cf);
-        const Vec f = cf.fn * kin.n + cf.ft;
-        p.f[i] += f;
-        p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
-        ++p.wall_contacts[i];
-        ++touching;
-        const Vec3 f3 = Space<D>::to3(f);
-        acc[2 * w] -= f3;
-        acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);
+      } else {
+        // Each candidate on its own (the same tests as wall_hits, without its
+        // scratch arrays: most particles have none or one).
+        for (int k = first; k < first + count; ++k) {
+          const int prim = nl.wall_prim[k];
+          geometry::Closest<D> c;
+          if (active_[s_.primitive_wall[prim]] &&
+              geometry::closest_point<D>(s_.primitives[prim], p.x[i], p.r[i], c) &&
+              c.distance < p.r[i])
+            touching += wall_contact(i, k, c, acc);
+          else
+            nl.wall_history[k] = ContactHistory<D>{};
+        }
       }
       if constexpr (D == 3)
         if (membranes_) membranes_->add_to_grain(p, i);
