@@ -2,6 +2,7 @@
 // merge key by key, other values (arrays of tables too) replace the base's, and
 // an error in a value that comes from the base names the base file.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -41,8 +42,12 @@ position = [0.5, 0.5]
 radius = 0.01
 )";
 
+// One folder per process and test: ctest runs the tests of this file in parallel
+// processes (and other checkouts' suites may run at the same time).
 fs::path folder() {
-  const fs::path dir = fs::path(testing::TempDir()) / "talus_extends";
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(testing::TempDir()) /
+                       ("talus_extends_" + std::to_string(::getpid()) + "_" + test->name());
   fs::create_directories(dir / "sub");
   return dir;
 }

@@ -4,6 +4,7 @@
 // play; a checkpoint that does not fit the scenario is refused.
 #include <gtest/gtest.h>
 #include <omp.h>
+#include <unistd.h>
 
 #include <filesystem>
 
@@ -52,7 +53,8 @@ MpmScenario block_on_turning_plate() {
 
 TEST(MpmCheckpoint, ResumedRunEndsBitForBitLikeTheUninterruptedOne) {
   const auto sc = block_on_turning_plate();
-  const auto path = std::filesystem::temp_directory_path() / "talus_mpm_checkpoint_test.bin";
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("talus_mpm_checkpoint_test_" + std::to_string(::getpid()) + ".bin");
   Solver<2> full = build_mpm<2>(sc);
   for (int k = 0; k < 300; ++k) full.advance();
   save_checkpoint(full, path);
@@ -83,7 +85,8 @@ TEST(MpmCheckpoint, ResumedRunEndsBitForBitLikeTheUninterruptedOne) {
 
 TEST(MpmCheckpoint, CheckpointOfAnotherScenarioIsRefused) {
   auto sc = block_on_turning_plate();
-  const auto path = std::filesystem::temp_directory_path() / "talus_mpm_checkpoint_other.bin";
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("talus_mpm_checkpoint_other_" + std::to_string(::getpid()) + ".bin");
   save_checkpoint(build_mpm<2>(sc), path);
   sc.bodies[0].max = Vec3(0.3, 0.17, 0.0);  // more points
   Solver<2> other = build_mpm<2>(sc);

@@ -2,6 +2,7 @@
 // the resolved TOML reads back to the same values, and bad input names the
 // file, line and key.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -88,7 +89,9 @@ TEST(RunoutScenario, BadInputNamesFileLineKey) {
   expect_error(edit(kBase, "[run]\n", "[run]\nmodel = \"fv\"\n"), 3, "model");
   expect_error(edit(kBase, "duration = 1.0", "duration = -1"), 3, "duration");
   // A profile path cannot take the flume's release triangle.
-  const std::string csv = (std::filesystem::temp_directory_path() / "talus_profile.csv").string();
+  const std::string csv = (std::filesystem::temp_directory_path() /
+                           ("talus_profile_" + std::to_string(::getpid()) + ".csv"))
+                              .string();
   std::ofstream(csv) << "x,y,width\n0,1,1\n2,0,1\n";
   const std::string profile =
       edit(edit(kBase, "beta = 33\narc_radius = 0.1\n", "file = \"" + csv + "\"\n"),
