@@ -3,11 +3,15 @@
 // line and the key; the bundled geotextile bag builds.
 #include <gtest/gtest.h>
 
+#include "mpm_scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_mpm.hpp"
 
 namespace talus::io {
 namespace {
+
+using mpm_cases::edit;
+using mpm_cases::expect_error;
 
 const std::string kBase = R"(method = "mpm"
 [run]
@@ -37,21 +41,6 @@ density = 500
 slack = 0.1
 slack_box = { min = [0.4, 0.4], max = [1.1, 0.5] }
 )";
-
-std::string edit(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
-void expect_error(const std::string& text, const std::string& needle) {
-  try {
-    parse_mpm_scenario(load_scenario_text(text, "bad.toml"));
-    FAIL() << "no error for: " << needle;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
 
 TEST(MpmMembraneScenario, ParsesRoundTripsAndBuilds) {
   const auto sc = parse_mpm_scenario(load_scenario_text(kBase, "m.toml"));

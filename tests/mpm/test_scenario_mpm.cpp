@@ -3,12 +3,16 @@
 // file, the line and the key. The bundled column scenario parses and builds.
 #include <gtest/gtest.h>
 
+#include "mpm_scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_mpm.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::io {
 namespace {
+
+using mpm_cases::edit;
+using mpm_cases::expect_error;
 
 const std::string kBase = R"(method = "mpm"
 [run]
@@ -36,12 +40,6 @@ box = { min = [0, 0], max = [0.3, 0.2] }
 initial_stress = "geostatic"
 )";
 
-std::string edit(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
 TEST(MpmScenario, ParsesAndRoundTrips) {
   const auto sc = parse_mpm_scenario(load_scenario_text(kBase, "base.toml"));
   EXPECT_EQ(sc.dimension, 2);
@@ -57,15 +55,6 @@ TEST(MpmScenario, ParsesAndRoundTrips) {
   const std::string resolved = mpm_scenario_to_toml(sc);
   const auto again = parse_mpm_scenario(load_scenario_text(resolved, "resolved.toml"));
   EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump()) << resolved;
-}
-
-void expect_error(const std::string& text, const std::string& needle) {
-  try {
-    parse_mpm_scenario(load_scenario_text(text, "bad.toml"));
-    FAIL() << "no error for: " << needle;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
 }
 
 TEST(MpmScenario, BadInputNamesFileLineAndKey) {
