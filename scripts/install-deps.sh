@@ -4,7 +4,7 @@
 # something is missing.
 set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
-      nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libgdal-dev
+      nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libgdal-dev voro++-dev
       python3 python3-vtk9 python3-matplotlib python3-numpy)
 # The peer benchmark needs LIGGGHTS; only bench/peer.sh asks for it.
 [ "${TALUS_WITH_PEERS:-0}" = 1 ] && pkgs+=(liggghts)
