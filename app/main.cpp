@@ -7,9 +7,10 @@
 #include <iostream>
 
 #include "analyse.hpp"
+#include "analyse_structure.hpp"
 #include "calibrate.hpp"
-#include "compare.hpp"
 #include "commands.hpp"
+#include "compare.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
 
@@ -40,7 +41,8 @@ int main(int argc, char** argv) {
   auto* cmp_cmd = cli.add_subcommand(
       "compare", "run one flume with several methods and report them side by side");
   cmp_cmd->add_option("file", cmp.file, "comparison file (method = \"compare\")")->required();
-  cmp_cmd->add_option("--methods", cmp.methods, "methods to run, e.g. dem,dan (default: all listed)")
+  cmp_cmd
+      ->add_option("--methods", cmp.methods, "methods to run, e.g. dem,dan (default: all listed)")
       ->delimiter(',');
   cmp_cmd->add_option("--out,-o", cmp.out, "output folder (default: runs/compare-<name>)");
   cmp_cmd->add_option("--threads,-j", cmp.threads, "OpenMP threads")->check(CLI::PositiveNumber);
@@ -82,6 +84,47 @@ int main(int argc, char** argv) {
   cg_cmd->add_option("--out,-o", cg.out, "output folder (default: RUN/coarse_grain)");
   cg_cmd->add_flag("--plot", cg.plot, "draw the r-z velocity field (plots/plot_coarse_grain.py)");
   cg_cmd->add_flag("--quiet,-q", cg.quiet, "no progress on stderr");
+  // The structure of the grains (Goetz 5.3): each command reads RUN's particle snapshots and
+  // writes into RUN/analysis unless --out is given.
+  auto structure = [&](const char* name, const char* what, StructureOptions& o) {
+    auto* c = ana_cmd->add_subcommand(name, what);
+    c->add_option("run", o.run_dir, "output folder of a DEM run")->required();
+    c->add_option("--out,-o", o.out, "output folder (default: RUN/analysis)");
+    c->add_flag("--quiet,-q", o.quiet, "no summary on stderr");
+    return c;
+  };
+  ContactsOptions zc;
+  auto* z_cmd =
+      structure("contacts", "contact number z of every snapshot, from the grains' overlaps", zc);
+  z_cmd->add_option("--from", zc.from,
+                    "first snapshot at or after this time, s (default: the first)");
+  z_cmd->add_option("--to", zc.to, "last snapshot at or before this time, s (default: the last)");
+  z_cmd->add_option("--gap", zc.gap,
+                    "grains whose surfaces are closer than this touch, m (default 0: overlap)");
+  z_cmd->add_option("--min-contacts", zc.min_contacts,
+                    "rattlers: grains with fewer contacts (default D+1)");
+  RdfCommandOptions rc;
+  auto* rdf_cmd = structure("rdf", "radial distribution function g(r) of one snapshot", rc);
+  rdf_cmd->add_option("--time,-t", rc.time, "snapshot nearest this time, s (default: the last)");
+  rdf_cmd->add_option("--rmax", rc.r_max, "largest distance, m (default: 5 mean diameters)");
+  rdf_cmd->add_option("--bins", rc.bins, "number of bins (default 100)");
+  D2minCommandOptions dc;
+  auto* d2_cmd =
+      structure("d2min", "non-affine displacement D2min of every grain between two snapshots", dc);
+  d2_cmd->add_option("--from", dc.from,
+                     "reference snapshot nearest this time, s (default: the first)");
+  d2_cmd->add_option("--to", dc.to, "later snapshot nearest this time, s (default: the last)");
+  d2_cmd->add_option("--cutoff", dc.cutoff,
+                     "neighbours within this distance at --from, m (default: 2.5 mean diameters)");
+  d2_cmd->add_option("--min-contacts", dc.min_contacts,
+                     "leave out grains with fewer contacts at --from (default 0; Goetz: 3)");
+  d2_cmd->add_option("--gap", dc.gap, "contact gap for --min-contacts, m (default 0)");
+  PackingOptions pc;
+  auto* pk_cmd = structure(
+      "packing", "local packing fraction of every grain from its radical Voronoi cell", pc);
+  pk_cmd->add_option("--time,-t", pc.time, "snapshot nearest this time, s (default: the last)");
+  pk_cmd->add_option("--margin", pc.margin,
+                     "also leave grains this close to the box out of the mean, m");
 
   try {
     cli.parse(argc, argv);
@@ -96,6 +139,10 @@ int main(int argc, char** argv) {
     if (cal_cmd->parsed()) return calibrate_command(cal);
     if (cmp_cmd->parsed()) return compare_command(cmp);
     if (cg_cmd->parsed()) return coarse_grain_command(cg);
+    if (z_cmd->parsed()) return contacts_command(zc);
+    if (rdf_cmd->parsed()) return rdf_command(rc);
+    if (d2_cmd->parsed()) return d2min_command(dc);
+    if (pk_cmd->parsed()) return packing_command(pc);
   } catch (const talus::InputError& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 2;

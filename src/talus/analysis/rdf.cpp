@@ -49,9 +49,9 @@ Rdf radial_distribution(const std::vector<Vec3>& position, const std::vector<dou
   if (reference.empty())
     throw InputError(fmt::format(
         "--rmax {} m is too large for this sample: no grain centre lies that far inside every face "
-        "of the box the grains fill ({} x {}{} m)",
+        "of the box the grains fill ({:.4g} x {:.4g}{} m)",
         o.r_max, rdf.hi.x() - rdf.lo.x(), rdf.hi.y() - rdf.lo.y(),
-        o.dimension == 3 ? fmt::format(" x {}", rdf.hi.z() - rdf.lo.z()) : std::string()));
+        o.dimension == 3 ? fmt::format(" x {:.4g}", rdf.hi.z() - rdf.lo.z()) : std::string()));
   rdf.reference_grains = reference.size();
 
   const double width = o.r_max / o.bins;

@@ -120,17 +120,42 @@ ParticleFrame read_particle_vtu(const std::filesystem::path& vtu) {
   read("radius", "Float64", 1, f.radius.data(), *n * sizeof(double));
   read("id", "Int64", 1, f.id.data(), *n * sizeof(int64_t));
   read("material", "Int32", 1, f.material.data(), *n * sizeof(int));
+  if (arrays.count("angular_velocity")) {
+    f.angular_velocity.resize(*n);
+    read("angular_velocity", "Float64", 3, f.angular_velocity.data(), *n * sizeof(Vec3));
+  }
+  if (arrays.count("contacts")) {
+    f.contacts.resize(*n);
+    read("contacts", "Int32", 1, f.contacts.data(), *n * sizeof(int));
+  }
   return f;
 }
 
-std::vector<double> read_material_densities(const std::filesystem::path& scenario_toml) {
-  toml::table table;
+namespace {
+
+toml::table parse_toml(const std::filesystem::path& scenario_toml) {
+  if (!std::filesystem::exists(scenario_toml))
+    throw InputError(fmt::format("{}: no such file", scenario_toml.string()));
   try {
-    table = toml::parse_file(scenario_toml.string());
+    return toml::parse_file(scenario_toml.string());
   } catch (const toml::parse_error& e) {
     throw InputError(
         fmt::format("{}:{}: {}", scenario_toml.string(), e.source().begin.line, e.description()));
   }
+}
+
+}  // namespace
+
+int read_run_dimension(const std::filesystem::path& scenario_toml) {
+  const toml::table table = parse_toml(scenario_toml);
+  const auto dimension = table["run"]["dimension"].value<int64_t>();
+  if (!dimension || (*dimension != 2 && *dimension != 3))
+    throw InputError(fmt::format("{}: [run] dimension is not 2 or 3", scenario_toml.string()));
+  return static_cast<int>(*dimension);
+}
+
+std::vector<double> read_material_densities(const std::filesystem::path& scenario_toml) {
+  const toml::table table = parse_toml(scenario_toml);
   const toml::array* materials = table["materials"].as_array();
   if (!materials) throw InputError(fmt::format("{}: no [[materials]]", scenario_toml.string()));
   std::vector<double> density;
