@@ -38,6 +38,19 @@ inline std::string write_temp(const std::string& name, const std::string& text) 
   return path;
 }
 
+// The message of the InputError that f() throws; a test failure and "" when
+// it throws none.
+template <typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError";
+  return "";
+}
+
 struct BadCase {
   std::string name;  // also the file name, so messages can be checked for it
   std::string text;

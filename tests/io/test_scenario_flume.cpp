@@ -2,6 +2,7 @@
 // expected coordinates are Kuen's Table 2 as corrected in spec flume.md.
 #include <gtest/gtest.h>
 
+#include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
 
@@ -90,13 +91,9 @@ material = "m"
 }
 
 void expect_error(const std::string& text, const std::string& fragment) {
-  try {
-    parse_text(text);
-    ADD_FAILURE() << "no error for: " << fragment;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("flume.toml:"), std::string::npos) << e.what();
-  }
+  const std::string message = cases::error_of([&] { parse_text(text); });
+  EXPECT_NE(message.find(fragment), std::string::npos) << fragment << ": " << message;
+  EXPECT_NE(message.find("flume.toml:"), std::string::npos) << message;
 }
 
 TEST(ScenarioFlume, BadFlumesAreRefusedWithFileLineAndKey) {

@@ -2,6 +2,7 @@
 // overrides that do not fit the file or the schema.
 #include <gtest/gtest.h>
 
+#include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
 
@@ -17,13 +18,7 @@ dem::DemScenario parse_with(const std::string& file, const std::vector<std::stri
 
 // The message of the InputError that parsing with these overrides throws.
 std::string error_with(const std::string& file, const std::vector<std::string>& sets) {
-  try {
-    parse_with(file, sets);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
+  return cases::error_of([&] { parse_with(file, sets); });
 }
 
 TEST(Overrides, ReplaceValuesOfEveryKind) {
@@ -107,14 +102,9 @@ TEST(Overrides, MalformedOverridesNameTheFileAndTheOverride) {
            {"materials.x.friction=0.3", "there is no entry 'x'"},
            {"run.duration.x=1",
             "--set run.duration.x=1: 'run.duration' is a value, not a table"}}) {
-    try {
-      load_scenario_file(kFull2d, {c.set});
-      ADD_FAILURE() << "no error for --set " << c.set;
-    } catch (const InputError& e) {
-      const std::string message = e.what();
-      EXPECT_EQ(message.rfind(kFull2d + ": ", 0), 0u) << message;
-      EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-    }
+    const std::string message = cases::error_of([&] { load_scenario_file(kFull2d, {c.set}); });
+    EXPECT_EQ(message.rfind(kFull2d + ": ", 0), 0u) << "--set " << c.set << ": " << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/toml_reader.hpp"
 
@@ -14,17 +15,7 @@ toml::table parse_text(std::string_view text) {
   return toml::parse(text, std::string_view("t.toml"));
 }
 
-// The message of the InputError that f throws.
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
+using cases::error_of;
 
 const std::string_view kText = R"(title = "t"
 n = 3

@@ -3,12 +3,12 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "talus/core/error.hpp"
+#include "talus/core/progress.hpp"
 
 namespace talus::dem {
 
@@ -109,10 +109,8 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
   } else {
     run.stepper->resume();
   }
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
-  auto last_progress = t0;
   const int64_t start = s.step;
+  ProgressClock progress(c.progress_seconds, start);
   const int64_t health_every = std::max<int64_t>(1, std::min<int64_t>(1000, end / 100 + 1));
   while (s.step < end) {
     const int64_t next = std::min(
@@ -127,17 +125,12 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
       for (auto* o : obs) o->on_snapshot(run);
     if (c.checkpoint_every > 0 && s.step % c.checkpoint_every == 0 && !last)
       for (auto* o : obs) o->on_checkpoint(run);
-    const auto now = clock::now();
-    if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_seconds || last) {
-      const double secs = std::chrono::duration<double>(now - t0).count();
-      for (auto* o : obs)
-        o->on_progress(s.time, end * s.dt, secs > 0 ? (s.step - start) / secs : 0.0);
-      last_progress = now;
-    }
+    if (progress.due(last))
+      for (auto* o : obs) o->on_progress(s.time, end * s.dt, progress.rate(s.step));
   }
   RunStats st;
   st.steps = s.step - start;
-  st.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  st.wall_seconds = progress.elapsed();
   return st;
 }
 

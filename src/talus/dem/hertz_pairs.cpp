@@ -25,6 +25,35 @@ struct alignas(64) Block {
   int i[kBlock], j[kBlock];
   std::size_t k[kBlock];
   int n = 0;
+
+  // The lane hooks of pair_blocks::flush.
+  void gather(int l, const Particles<3>& p) {
+    const int pi = i[l], pj = j[l];
+    mi[l] = p.m[pi];
+    mj[l] = p.m[pj];
+    const Vec3 vrel = p.v[pi] - p.v[pj];
+    vx[l] = vrel.x();
+    vy[l] = vrel.y();
+    vz[l] = vrel.z();
+    wix[l] = p.w[pi].x();
+    wiy[l] = p.w[pi].y();
+    wiz[l] = p.w[pi].z();
+    wjx[l] = p.w[pj].x();
+    wjy[l] = p.w[pj].y();
+    wjz[l] = p.w[pj].z();
+  }
+  void set_coeffs(int l, const HertzMindlin::Coeffs& c) {
+    e_star[l] = c.h.e_star;
+    g_star[l] = c.h.g_star;
+    mu[l] = c.h.mu;
+    damp_n[l] = c.damp_n;
+    t_ratio[l] = c.tangential_ratio;
+  }
+  void scatter(int l, const ForceTarget<3>& out, std::vector<Vec3>& shear) const {
+    out.add(i[l], j[l], Vec3(fx[l], fy[l], fz[l]), Vec3(tix[l], tiy[l], tiz[l]),
+            Vec3(tjx[l], tjy[l], tjz[l]));
+    shear[k[l]] = Vec3(sx[l], sy[l], sz[l]);
+  }
 };
 
 // pair_force + HertzMindlin::compute of stepper.cpp, lane by lane; the
@@ -92,45 +121,6 @@ TALUS_HOT void block_body(Block& b, double dt) {
 using Kernel = pair_blocks::Kernel<Block, block_body>;
 using BlockFn = Kernel::Fn;
 
-// Gathers the rest of the block's state, computes it and adds the results to
-// the particles in pair order.
-void flush(Block& b, const HertzPairsInput& in, BlockFn fn, const ForceTarget<3>& out) {
-  const auto& p = *in.particles;
-  for (int l = 0; l < b.n; ++l) {
-    const int i = b.i[l], j = b.j[l];
-    b.mi[l] = p.m[i];
-    b.mj[l] = p.m[j];
-    const Vec3 vrel = p.v[i] - p.v[j];
-    b.vx[l] = vrel.x();
-    b.vy[l] = vrel.y();
-    b.vz[l] = vrel.z();
-    b.wix[l] = p.w[i].x();
-    b.wiy[l] = p.w[i].y();
-    b.wiz[l] = p.w[i].z();
-    b.wjx[l] = p.w[j].x();
-    b.wjy[l] = p.w[j].y();
-    b.wjz[l] = p.w[j].z();
-  }
-  if (in.n_materials > 1) {
-    for (int l = 0; l < b.n; ++l) {
-      const auto& c = in.coeffs[p.material[b.i[l]] * in.n_materials + p.material[b.j[l]]];
-      b.e_star[l] = c.h.e_star;
-      b.g_star[l] = c.h.g_star;
-      b.mu[l] = c.h.mu;
-      b.damp_n[l] = c.damp_n;
-      b.t_ratio[l] = c.tangential_ratio;
-    }
-  }
-  fn(b, in.dt);
-  auto& shear = in.neighbours->pair_shear;
-  for (int l = 0; l < b.n; ++l) {
-    out.add(b.i[l], b.j[l], Vec3(b.fx[l], b.fy[l], b.fz[l]), Vec3(b.tix[l], b.tiy[l], b.tiz[l]),
-            Vec3(b.tjx[l], b.tjy[l], b.tjz[l]));
-    shear[b.k[l]] = Vec3(b.sx[l], b.sy[l], b.sz[l]);
-  }
-  b.n = 0;
-}
-
 }  // namespace
 
 const char* hertz_pairs_isa() { return Kernel::chosen().name; }
@@ -144,17 +134,8 @@ int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size
   const BlockFn fn = Kernel::chosen().fn;
   thread_local Block b;
   b.n = 0;
-  const bool one_material = in.n_materials == 1;
-  if (one_material) {
-    const auto& c = in.coeffs[0];
-    for (int l = 0; l < kBlock; ++l) {
-      b.e_star[l] = c.h.e_star;
-      b.g_star[l] = c.h.g_star;
-      b.mu[l] = c.h.mu;
-      b.damp_n[l] = c.damp_n;
-      b.t_ratio[l] = c.tangential_ratio;
-    }
-  }
+  if (in.n_materials == 1)
+    for (int l = 0; l < kBlock; ++l) b.set_coeffs(l, in.coeffs[0]);
   // Whether a pair touches is close to random from one pair to the next, so
   // the filter has no branch: every pair is written into the next free slot,
   // which only a touching pair keeps. Its shear moves into the block and the
@@ -183,9 +164,9 @@ int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size
     const int touches = d2 >= rs * rs ? 0 : 1;  // as the scalar path (NaN counts as touching)
     b.n += touches;
     touching += touches;
-    if (b.n == kBlock) flush(b, in, fn, out);
+    if (b.n == kBlock) pair_blocks::flush(b, in, fn, out);
   }
-  if (b.n > 0) flush(b, in, fn, out);
+  if (b.n > 0) pair_blocks::flush(b, in, fn, out);
   return touching;
 }
 

@@ -26,6 +26,29 @@ struct alignas(64) Block {
   int i[kBlock], j[kBlock];
   std::size_t k[kBlock];
   int n = 0;
+
+  // The lane hooks of pair_blocks::flush.
+  void gather(int l, const Particles<2>& p) {
+    const int pi = i[l], pj = j[l];
+    mi[l] = p.m[pi];
+    mj[l] = p.m[pj];
+    const Vec2 vrel = p.v[pi] - p.v[pj];
+    vx[l] = vrel.x();
+    vy[l] = vrel.y();
+    wi[l] = p.w[pi];
+    wj[l] = p.w[pj];
+  }
+  void set_coeffs(int l, const LinearSpringDashpot::Coeffs& c) {
+    kn[l] = c.kn;
+    ks[l] = c.ks;
+    beta[l] = c.beta;
+    mu[l] = c.mu;
+    no_pull[l] = c.may_pull ? 0.0 : 1.0;
+  }
+  void scatter(int l, const ForceTarget<2>& out, std::vector<Vec2>& shear) const {
+    out.add(i[l], j[l], Vec2(fx[l], fy[l]), ti[l], tj[l]);
+    shear[k[l]] = Vec2(sx[l], sy[l]);
+  }
 };
 
 // pair_force + LinearSpringDashpot::compute of stepper.cpp in 2D, lane by
@@ -89,40 +112,6 @@ TALUS_HOT void block_body(Block& b, double dt) {
 using Kernel = pair_blocks::Kernel<Block, block_body>;
 using BlockFn = Kernel::Fn;
 
-void set_coeffs(Block& b, int l, const LinearSpringDashpot::Coeffs& c) {
-  b.kn[l] = c.kn;
-  b.ks[l] = c.ks;
-  b.beta[l] = c.beta;
-  b.mu[l] = c.mu;
-  b.no_pull[l] = c.may_pull ? 0.0 : 1.0;
-}
-
-// Gathers the rest of the block's state, computes it and adds the results to
-// the particles in pair order.
-void flush(Block& b, const LinearPairsInput& in, BlockFn fn, const ForceTarget<2>& out) {
-  const auto& p = *in.particles;
-  for (int l = 0; l < b.n; ++l) {
-    const int i = b.i[l], j = b.j[l];
-    b.mi[l] = p.m[i];
-    b.mj[l] = p.m[j];
-    const Vec2 vrel = p.v[i] - p.v[j];
-    b.vx[l] = vrel.x();
-    b.vy[l] = vrel.y();
-    b.wi[l] = p.w[i];
-    b.wj[l] = p.w[j];
-  }
-  if (in.n_materials > 1)
-    for (int l = 0; l < b.n; ++l)
-      set_coeffs(b, l, in.coeffs[p.material[b.i[l]] * in.n_materials + p.material[b.j[l]]]);
-  fn(b, in.dt);
-  auto& shear = in.neighbours->pair_shear;
-  for (int l = 0; l < b.n; ++l) {
-    out.add(b.i[l], b.j[l], Vec2(b.fx[l], b.fy[l]), b.ti[l], b.tj[l]);
-    shear[b.k[l]] = Vec2(b.sx[l], b.sy[l]);
-  }
-  b.n = 0;
-}
-
 }  // namespace
 
 const char* linear_pairs_isa() { return Kernel::chosen().name; }
@@ -137,7 +126,7 @@ int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::si
   thread_local Block b;
   b.n = 0;
   if (in.n_materials == 1)
-    for (int l = 0; l < kBlock; ++l) set_coeffs(b, l, in.coeffs[0]);
+    for (int l = 0; l < kBlock; ++l) b.set_coeffs(l, in.coeffs[0]);
   // Whether a pair touches is close to random from one pair to the next, so
   // the filter has no branch: every pair is written into the next free slot,
   // which only a touching pair keeps. Its shear moves into the block and the
@@ -168,12 +157,12 @@ int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::si
     touching += touches;
     if (l == kBlock) {
       b.n = l;
-      flush(b, in, fn, out);
+      pair_blocks::flush(b, in, fn, out);
       l = 0;
     }
   }
   b.n = l;
-  if (b.n > 0) flush(b, in, fn, out);
+  if (b.n > 0) pair_blocks::flush(b, in, fn, out);
   return touching;
 }
 

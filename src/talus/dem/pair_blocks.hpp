@@ -1,7 +1,8 @@
 #pragma once
 // What the vectorised pair loops (dem/hertz_pairs.cpp, dem/linear_pairs.cpp)
-// share: their input, the block size and the choice of instruction set at
-// run time.
+// share: their input, the block size, the choice of instruction set at run
+// time and the flush of a block.
+#include "talus/dem/force_target.hpp"
 #include "talus/dem/neighbour_list.hpp"
 #include "talus/dem/particles.hpp"
 
@@ -48,6 +49,27 @@ struct Kernel {
     return choice;
   }
 };
+
+// Gathers the rest of a full block's state, computes it with `fn` and adds the
+// results to the particles in pair order (the order of the one-thread loop, so
+// the sums keep their bits); the new shear goes back to the list. With one
+// material the loop set the coefficients of every lane once; with several each
+// lane takes its pair's. `Block` has per lane l: gather(l, particles),
+// set_coeffs(l, coeffs) and scatter(l, out, shear). Not declared inline, as
+// the per-file flush it replaces, so the compiler weighs inlining it the same.
+template <int D, class Coeffs, class Block>
+void flush(Block& b, const PairBlockInput<D, Coeffs>& in, void (*fn)(Block&, double),
+           const ForceTarget<D>& out) {
+  const auto& p = *in.particles;
+  for (int l = 0; l < b.n; ++l) b.gather(l, p);
+  if (in.n_materials > 1)
+    for (int l = 0; l < b.n; ++l)
+      b.set_coeffs(l, in.coeffs[p.material[b.i[l]] * in.n_materials + p.material[b.j[l]]]);
+  fn(b, in.dt);
+  auto& shear = in.neighbours->pair_shear;
+  for (int l = 0; l < b.n; ++l) b.scatter(l, out, shear);
+  b.n = 0;
+}
 
 }  // namespace pair_blocks
 

@@ -14,6 +14,10 @@
 #include "talus/dem/params.hpp"
 #include "talus/io/toml_reader.hpp"
 
+namespace talus::geometry {
+struct FlumeGeometry;
+}
+
 namespace talus::io::detail {
 
 // The file's names of the enumerated options; the first one is listed first
@@ -134,6 +138,18 @@ void set_polygon_bounds(dem::ParticleSourceParams& s);
 void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s);
 std::optional<int> read_count(TomlReader& r);
 dem::SettleParams read_settle(TomlReader& r);
+// The [flume] keys that the DEM and the MPM flume share (scenario_flume_keys.cpp),
+// for Flume = dem::FlumeParams or mpm::MpmFlumeParams, read in this order:
+// the path (2D only; beta, arc_radius, l_star, barrier_length), the reader's
+// own keys, the analysis (front_quantile, profile_bin, tail_thickness), then
+// resolve_flume_path: the flume's geometry, failing at "beta" when its pieces
+// do not fit, with f.l_star and f.barrier_length set to the values it uses.
+template <class Flume>
+void read_flume_path(TomlReader& r, Flume& f, const DemContext& ctx);
+template <class Flume>
+void read_flume_analysis(TomlReader& r, Flume& f);
+template <class Flume>
+geometry::FlumeGeometry resolve_flume_path(TomlReader& r, Flume& f);
 // [flume]: fills s.flume, appends the generated walls (and the release fill
 // when [flume.release] is given) to s.walls and s.sources.
 void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);

@@ -3,7 +3,6 @@
 // behind the gate, so a flume scenario never types wall coordinates.
 #include <fmt/format.h>
 
-#include "talus/core/error.hpp"
 #include "talus/geometry/flume.hpp"
 #include "talus/io/scenario_detail.hpp"
 
@@ -49,12 +48,8 @@ dem::ParticleSourceParams read_release(TomlReader& r, const std::vector<Vec3>& p
 }
 
 void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
-  if (ctx.dimension != 2) r.fail("flume", "the flume is a 2D scenario: set run.dimension = 2");
   dem::FlumeParams f;
-  f.beta = r.required_angle("beta");
-  f.arc_radius = required_number_in(r, "arc_radius", positive());
-  f.l_star = optional_number_in(r, "l_star", positive());
-  f.barrier_length = optional_number_in(r, "barrier_length", positive());
+  read_flume_path(r, f, ctx);
   f.wall_material = r.required_string("wall_material");
   check_material(r, "wall_material", f.wall_material, ctx);
   f.lift_gate = r.enumeration("gate", kGateModes, 0) == 1;
@@ -63,19 +58,8 @@ void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
   const auto layers = r.integer("layers", f.layers);
   r.expect(layers >= 1 && layers <= 100, "layers", "an integer from 1 to 100");
   f.layers = static_cast<int>(layers);
-  f.front_quantile =
-      number_in(r, "front_quantile", f.front_quantile, between(0.5, 1.0, true, false));
-  f.profile_bin = number_in(r, "profile_bin", f.profile_bin, positive());
-  f.tail_thickness = number_in(r, "tail_thickness", f.tail_thickness, non_negative());
-
-  geometry::FlumeGeometry g;
-  try {
-    g = geometry::make_flume(f);
-  } catch (const InputError& e) {
-    r.fail("beta", e.what());
-  }
-  f.l_star = g.l_star;
-  f.barrier_length = g.barrier_length;
+  read_flume_analysis(r, f);
+  const geometry::FlumeGeometry g = resolve_flume_path(r, f);
 
   auto walls = g.walls(f.wall_material);
   // The lid only holds the fill in place while it settles.

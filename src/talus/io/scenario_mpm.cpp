@@ -5,7 +5,6 @@
 
 #include <filesystem>
 
-#include "talus/core/error.hpp"
 #include "talus/io/scenario_detail.hpp"
 #include "talus/io/scenario_mpm_membranes.hpp"
 
@@ -219,29 +218,16 @@ void read_membranes(TomlReader& root, mpm::MpmScenario& s, const DemContext& ctx
 // [flume]: the flume's bed as a rigid friction wall, the release triangle
 // filled with points of release.material (mpm/flume.hpp).
 mpm::MpmFlumeParams read_flume(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx) {
-  if (ctx.dimension != 2) r.fail("flume", "the flume is a 2D scenario: set run.dimension = 2");
   mpm::MpmFlumeParams f;
-  f.beta = r.required_angle("beta");
-  f.arc_radius = required_number_in(r, "arc_radius", positive());
-  f.l_star = detail::optional_number_in(r, "l_star", positive());
-  f.barrier_length = detail::optional_number_in(r, "barrier_length", positive());
+  detail::read_flume_path(r, f, ctx);
   f.wall_friction = r.required_angle("wall_friction");
   r.expect(f.wall_friction >= 0.0 && f.wall_friction < M_PI / 2, "wall_friction",
            "an angle in [0, 90) degrees");
   const auto layers = r.integer("wall_layers", f.wall_layers);
   r.expect(layers >= 1 && layers <= 8, "wall_layers", "an integer in [1, 8]");
   f.wall_layers = static_cast<int>(layers);
-  f.front_quantile =
-      number_in(r, "front_quantile", f.front_quantile, between(0.5, 1.0, true, false));
-  f.profile_bin = number_in(r, "profile_bin", f.profile_bin, positive());
-  f.tail_thickness = number_in(r, "tail_thickness", f.tail_thickness, non_negative());
-  try {
-    const auto g = mpm::flume_geometry(f);
-    f.l_star = g.l_star;
-    f.barrier_length = g.barrier_length;
-  } catch (const InputError& e) {
-    r.fail("beta", e.what());
-  }
+  detail::read_flume_analysis(r, f);
+  detail::resolve_flume_path(r, f);
   if (auto release = r.optional_table("release")) {
     f.release_material = release->required_string("material");
     for (std::size_t i = 0; i < s.materials.size(); ++i)

@@ -1,8 +1,9 @@
 #include "talus/mpm/driver.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+
+#include "talus/core/progress.hpp"
 
 namespace talus::mpm {
 
@@ -25,9 +26,7 @@ double top(const Particles<D>& p, const typename Space<D>::Vec& gravity) {
 template <int D>
 MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmObserver<D>*>& obs,
                     bool fresh) {
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
-  auto last_progress = t0;
+  ProgressClock progress(c.progress_seconds, s.steps);
   if (fresh) {
     for (auto* o : obs) o->on_series(s);
     if (c.snapshot_interval >= 0.0)
@@ -62,17 +61,12 @@ MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmO
       for (auto* o : obs) o->on_checkpoint(s);
       next_checkpoint = next_after(c.checkpoint_interval);
     }
-    const auto now = clock::now();
-    if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_seconds || last) {
-      const double secs = std::chrono::duration<double>(now - t0).count();
-      for (auto* o : obs)
-        o->on_progress(s.time, c.duration, secs > 0 ? (s.steps - start) / secs : 0.0);
-      last_progress = now;
-    }
+    if (progress.due(last))
+      for (auto* o : obs) o->on_progress(s.time, c.duration, progress.rate(s.steps));
   }
   MpmRunStats st;
   st.steps = s.steps - start;
-  st.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  st.wall_seconds = progress.elapsed();
   return st;
 }
 
