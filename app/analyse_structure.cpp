@@ -62,6 +62,12 @@ std::size_t snapshot_at(const Run& run, double time, const char* option) {
   return best;
 }
 
+// The snapshot a `--time` option names: the last one when the option is not given (NaN).
+const io::SnapshotEntry& snapshot_of_time_option(const Run& run, double time) {
+  const double t = std::isnan(time) ? run.snapshots.back().time : time;
+  return run.snapshots[snapshot_at(run, t, "--time")];
+}
+
 // A snapshot with the checks the analyses need (finite positions, positive radii).
 io::ParticleFrame read_frame(const io::SnapshotEntry& e) {
   io::ParticleFrame f = io::read_particle_vtu(e.file);
@@ -134,8 +140,7 @@ int contacts_command(const ContactsOptions& o) {
 
 int rdf_command(const RdfCommandOptions& o) {
   const Run run = open_run(o);
-  const double t = std::isnan(o.time) ? run.snapshots.back().time : o.time;
-  const auto& e = run.snapshots[snapshot_at(run, t, "--time")];
+  const auto& e = snapshot_of_time_option(run, o.time);
   const io::ParticleFrame f = read_frame(e);
   analysis::RdfOptions ro;
   ro.dimension = run.dimension;
@@ -258,8 +263,7 @@ int d2min_command(const D2minCommandOptions& o) {
 
 int packing_command(const PackingOptions& o) {
   const Run run = open_run(o);
-  const double t = std::isnan(o.time) ? run.snapshots.back().time : o.time;
-  const auto& e = run.snapshots[snapshot_at(run, t, "--time")];
+  const auto& e = snapshot_of_time_option(run, o.time);
   const io::ParticleFrame f = read_frame(e);
   const analysis::LocalPacking p =
       analysis::voronoi_packing(f.position, f.radius, run.dimension, o.margin);
