@@ -103,6 +103,72 @@ TEST(MpmScenario, RigidBodiesParseRoundTripAndBuild) {
                "[[rigid_bodies]] 'box'");
 }
 
+// 3D rigid bodies turned about an axis (the clay block's run-out and obstacle,
+// scenarios/mpm_clay_block.toml): the boundary particles and their normals
+// are turned about the hinge; the turned box must lie inside the grid; a
+// body one particle thick is refused (its top and bottom normals would cancel).
+TEST(MpmScenario, TurnedRigidBodiesIn3D) {
+  const auto file =
+      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block.toml", {});
+  const auto sc = parse_mpm_scenario(file);
+  ASSERT_EQ(sc.rigid_bodies.size(), 3u);
+  const auto& runout = sc.rigid_bodies[1];
+  EXPECT_NEAR(runout.angle, 30.0 * M_PI / 180.0, 1e-15);
+  EXPECT_EQ(runout.axis, Vec3::UnitZ());
+  const auto again = parse_mpm_scenario(load_scenario_text(mpm_scenario_to_toml(sc), "r.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
+  const auto body = mpm::build_rigid_body<3>(runout, sc.grid.cell_size);
+  // Every particle lies below the turned surface through the hinge (1, 0, 0)
+  // with normal (-sin 30, cos 30, 0), within the plate's 0.08 m thickness.
+  const Eigen::Vector3d n(-0.5, std::sqrt(3.0) / 2.0, 0.0), hinge(1.0, 0.0, 0.0);
+  std::size_t up = 0;
+  for (std::size_t i = 0; i < body.x.size(); ++i) {
+    const double depth = -n.dot(body.x[i] - hinge);
+    EXPECT_GT(depth, 0.0);
+    EXPECT_LT(depth, 0.08);
+    if (body.normal[i].dot(n) > 1.0 - 1e-12) ++up;
+  }
+  EXPECT_GT(up, 0u);  // the top layer faces up the turned plate
+  const std::string text = R"(
+method = "mpm"
+[run]
+dimension = 3
+duration = 0.1
+gravity = [0.0, -10.0, 0.0]
+[grid]
+min = [0.0, 0.0, 0.0]
+max = [1.0, 1.0, 1.0]
+cell_size = 0.1
+[[materials]]
+name = "clay"
+model = "linear_elastic"
+density = 2000
+youngs_modulus = 1e6
+poisson_ratio = 0.3
+[[bodies]]
+material = "clay"
+box = { min = [0.4, 0.5, 0.4], max = [0.6, 0.7, 0.6] }
+[[rigid_bodies]]
+box = { min = [0.1, 0.2, 0.1], max = [0.9, 0.4, 0.9] }
+angle = 20
+axis = [0, 0, 2]
+motion = { hinge = [0.5, 0.4, 0.5] }
+)";
+  const auto ok = parse_mpm_scenario(load_scenario_text(text, "t.toml"));
+  EXPECT_NEAR(ok.rigid_bodies[0].axis.norm(), 1.0, 1e-15);  // normalised
+  expect_error(edit(text, "axis = [0, 0, 2]", "axis = [0, 0, 0]"), "'axis'");
+  expect_error(edit(text, "angle = 20", "angle = 80"), "once turned by angle about the hinge");
+  auto thin = ok.rigid_bodies[0];
+  thin.max.y() = thin.min.y() + 0.1;  // one cell, one particle per cell
+  thin.per_cell = 1;
+  try {
+    mpm::build_rigid_body<3>(thin, 0.1);
+    FAIL() << "a one-particle-thick body was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("one particle thick"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MpmScenario, BundledColumnBuilds) {
   const auto file =
       load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_column_collapse.toml", {});

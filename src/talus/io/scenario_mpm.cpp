@@ -144,6 +144,27 @@ void check_box_in_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContex
       r.fail("box", "expected a box inside the [grid] (min to max)");
 }
 
+// Fails at "box" unless the body's box, turned by its angle about the hinge,
+// lies inside the [grid].
+void check_turned_box_in_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx,
+                              const mpm::RigidBodyParams& b) {
+  const Eigen::Matrix3d q = ctx.dimension == 2
+                                ? Eigen::Matrix3d(Eigen::AngleAxisd(b.angle, Vec3::UnitZ()))
+                                : Eigen::Matrix3d(Eigen::AngleAxisd(b.angle, b.axis));
+  for (int corner = 0; corner < (1 << ctx.dimension); ++corner) {
+    Vec3 c = b.min;
+    for (int d = 0; d < ctx.dimension; ++d)
+      if (corner >> d & 1) c[d] = b.max[d];
+    const Vec3 y = b.motion.hinge + q * (c - b.motion.hinge);
+    for (int d = 0; d < ctx.dimension; ++d)
+      if (y[d] < s.grid.lo[d] - 1e-12 || y[d] > s.grid.hi[d] + 1e-12)
+        r.fail("box",
+               b.angle == 0.0
+                   ? "expected a box inside the [grid] (min to max)"
+                   : "expected a box inside the [grid] once turned by angle about the hinge");
+  }
+}
+
 mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx) {
   mpm::BodyParams b;
   b.material = r.required_string("material");
@@ -174,7 +195,6 @@ mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
                                      const DemContext& ctx) {
   mpm::RigidBodyParams b;
   detail::read_box(r, "box", ctx, b.min, b.max);
-  check_box_in_grid(r, s, ctx, b.min, b.max);
   b.per_cell = read_points_per_cell(r, b.per_cell);
   b.contact = r.enumeration("contact", kContacts, b.contact);
   if (b.contact == mpm::RigidContact::Friction)
@@ -194,11 +214,15 @@ mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
     m->expect(b.motion.stop > b.motion.start, "stop", "a time after start");
     m->finish();
   }
-  if (ctx.dimension == 2) {
-    b.angle = r.angle("angle", 0.0);
+  b.angle = r.angle("angle", 0.0);
+  if (ctx.dimension == 3) {
+    b.axis = r.vec3("axis", Vec3::UnitZ());
+    r.expect(b.axis.norm() > 0.0, "axis", "a non-zero vector [x, y, z]");
+    b.axis.normalize();
   } else {
-    r.reject({"angle"}, "is only available in 2D (turn a 3D body with motion instead)");
+    r.reject({"axis"}, "is only used in 3D (a 2D body turns about z)");
   }
+  check_turned_box_in_grid(r, s, ctx, b);
   r.finish();
   return b;
 }
@@ -380,7 +404,8 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
            {"points_per_cell", b.per_cell},
            {"contact", detail::name_of(kContacts, b.contact)}};
     if (b.contact == mpm::RigidContact::Friction) j["friction"] = b.friction;
-    if (dim == 2) j["angle"] = rad2deg(b.angle);
+    j["angle"] = rad2deg(b.angle);
+    if (dim == 3) j["axis"] = point(b.axis);
     j["motion"] = motion;
     rigid.push_back(j);
   }

@@ -85,6 +85,16 @@ RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size) {
   body.x =
       fill_box<D>(Space<D>::from3(p.min), Space<D>::from3(p.max), cell_size / p.per_cell, volume);
   body.weight.assign(body.x.size(), volume);
+  // A single layer of particles is as near the one face as the opposite one:
+  // its normals would cancel and the contact would have no direction.
+  for (int d = 0; d < D; ++d)
+    if (std::round((p.max[d] - p.min[d]) * p.per_cell / cell_size) < 2.0)
+      throw InputError(fmt::format(
+          "[[rigid_bodies]]: the box from ({}, {}, {}) to ({}, {}, {}) is one particle thick, so "
+          "its contact normals are undefined; make it at least two particle spacings ({} m) "
+          "thick",
+          p.min.x(), p.min.y(), p.min.z(), p.max.x(), p.max.y(), p.max.z(),
+          2.0 * cell_size / p.per_cell));
   // Outward normal of the nearest face; the mean of the nearest ones at ties
   // (edges, corners).
   const Vec lo = Space<D>::from3(p.min), hi = Space<D>::from3(p.max);
@@ -102,12 +112,10 @@ RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size) {
   body.hinge = Space<D>::from3(p.motion.hinge);
   body.contact = p.contact;
   body.friction = p.friction;
-  if constexpr (D == 2) {
-    const Eigen::Matrix2d q = Eigen::Rotation2Dd(p.angle).toRotationMatrix();
-    for (Vec& y : body.x) y = body.hinge + q * (y - body.hinge);
-    for (Vec& n : body.normal) n = q * n;
-    body.angle = p.angle;
-  }
+  const auto q = rigid_rotation<D>(p);
+  for (Vec& y : body.x) y = body.hinge + q * (y - body.hinge);
+  for (Vec& n : body.normal) n = q * n;
+  body.angle = p.angle;
   return body;
 }
 

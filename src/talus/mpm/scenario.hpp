@@ -1,6 +1,7 @@
 #pragma once
 // The resolved parameters of an MPM run, as read from a scenario file by
 // io/scenario_mpm.cpp (angles in radians, defaults filled in).
+#include <Eigen/Geometry>
 #include <array>
 #include <optional>
 #include <string>
@@ -37,11 +38,14 @@ struct BodyParams {
 };
 
 // A rigid body of boundary particles (per_cell^D per cell) filling a box that
-// is then turned by `angle` about the hinge (2D), with a prescribed motion.
+// is then turned by `angle` about `axis` through the hinge, with a prescribed
+// motion. A box is the only shape, so inclined plates (a chute, a tilted run-out)
+// are turned boxes.
 struct RigidBodyParams {
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();
   int per_cell = 2;
-  double angle = 0.0;  // rad, initial rotation about motion.hinge (2D)
+  double angle = 0.0;         // rad, initial rotation about motion.hinge
+  Vec3 axis = Vec3::UnitZ();  // unit rotation axis (2D: always z)
   RigidMotion motion;
   RigidContact contact = RigidContact::Friction;
   double friction = 0.0;
@@ -94,6 +98,15 @@ Solver<D> build_mpm(const MpmScenario& sc);
 // The boundary particles of a rigid body on a grid of the given cell size.
 template <int D>
 RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size);
+
+// The initial rotation of a rigid body's box (about the hinge).
+template <int D>
+Eigen::Matrix<double, D, D> rigid_rotation(const RigidBodyParams& p) {
+  if constexpr (D == 2)
+    return Eigen::Rotation2Dd(p.angle).toRotationMatrix();
+  else
+    return Eigen::AngleAxisd(p.angle, p.axis).toRotationMatrix();
+}
 
 // The flume's geometry (InputError keys flume.* when its pieces do not fit).
 geometry::FlumeGeometry flume_geometry(const MpmFlumeParams& f);

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Cracks of a clay block run (scenarios/mpm_clay_block*.toml; van den Bout §3).
+
+Usage: plot_clay_block.py RUN_DIR [--corner-z Z] [--band B]
+Writes RUN_DIR/plots/cracks.png and RUN_DIR/cracks.json and prints their paths.
+
+The crack indicator is c/c0 of every material point (mpm.md: a crack is where
+c/c0 < 1, and only a point that lost cohesion can be a physical crack). The
+pattern is read in the block's reference configuration (each point at its
+first-snapshot position, matched by id), seen from above (x down the slope,
+z across), so that "a crack from the obstacle corner along the flow direction
+over half the block's length" becomes a length that can be measured:
+  crack_length   along the band of initial z within B of the obstacle corner
+                 line z = Z: the length, from the block's front backwards, over
+                 which every slice of one point spacing holds a damaged point
+                 (c/c0 < 0.5); as a fraction of the block's length too;
+  damaged_rear   the fraction of damaged points that started in the rear half
+                 of the block (away from the impact);
+  cracked/damaged fractions of all points (c/c0 < 1, c/c0 < 0.5).
+"""
+import argparse
+import json
+import os
+
+import matplotlib
+from plot_mpm import read_points, snapshots
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+DAMAGED = 0.5
+
+
+def crack_metrics(x0, ratio, spacing, corner_z, band):
+    front, rear = float(np.max(x0[:, 0])), float(np.min(x0[:, 0]))
+    length = front - rear + spacing
+    damaged = ratio < DAMAGED
+    in_band = np.abs(x0[:, 2] - corner_z) <= band
+    # Slices of one point spacing from the front backwards.
+    slices = np.floor((front - x0[:, 0]) / spacing + 0.5).astype(int)
+    crack = 0
+    for k in range(int(np.max(slices)) + 1):
+        sel = in_band & (slices == k)
+        if not np.any(damaged[sel]):
+            break
+        crack += 1
+    mid = rear + 0.5 * (front - rear)
+    n_damaged = int(np.count_nonzero(damaged))
+    return {
+        "points": int(len(ratio)),
+        "cracked_fraction": float(np.mean(ratio < 1.0)),
+        "damaged_fraction": float(np.mean(damaged)),
+        "min_c_over_c0": float(np.min(ratio)),
+        "block_length": length,
+        "corner_z": corner_z,
+        "band_half_width": band,
+        "crack_length": crack * spacing,
+        "crack_length_fraction": crack * spacing / length,
+        "damaged_rear_fraction":
+            float(np.count_nonzero(damaged & (x0[:, 0] < mid)) / n_damaged) if n_damaged else 0.0,
+    }
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("run")
+    ap.add_argument("--corner-z", type=float, default=0.275,
+                    help="z of the obstacle's corner line (m; default: the bundled scenario's)")
+    ap.add_argument("--band", type=float, default=None,
+                    help="half width of the band about the corner line (m; default: one spacing)")
+    args = ap.parse_args()
+    snaps = snapshots(args.run)
+    if len(snaps) < 2:
+        raise SystemExit(f"{args.run}: needs at least two particle snapshots")
+    fields = ("id", "c_over_c0", "radius", "plastic_strain")
+    xyz0, d0 = read_points(snaps[0][1], fields)
+    xyz1, d1 = read_points(snaps[-1][1], fields)
+    start = np.empty((int(np.max(d0["id"])) + 1, 3))
+    start[d0["id"].astype(int)] = xyz0
+    x0, x1 = start[d1["id"].astype(int)], xyz1
+    ratio = d1["c_over_c0"]
+    spacing = 2.0 * float(np.median(d1["radius"]))
+    band = args.band if args.band is not None else spacing
+    m = crack_metrics(x0, ratio, spacing, args.corner_z, band)
+    m["time"] = snaps[-1][0]
+
+    out = os.path.join(args.run, "plots")
+    os.makedirs(out, exist_ok=True)
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
+    # Reference configuration, seen from above and from the side: the mean
+    # c/c0 over each column of points (a crack through the height shows as a
+    # low column; damage at the base alone only halves it).
+    for k, (a, b, label) in enumerate(((0, 2, "z0 across (m)"), (0, 1, "y0 above the bed (m)"))):
+        cols = {}
+        for key, r in zip(map(tuple, np.round(x0[:, [a, b]] / spacing).astype(int)), ratio):
+            cols.setdefault(key, []).append(r)
+        keys = np.array(list(cols))
+        sc = ax[k].scatter(keys[:, 0] * spacing, keys[:, 1] * spacing,
+                           c=[np.mean(v) for v in cols.values()], cmap="RdYlBu", vmin=0, vmax=1,
+                           s=40, marker="s")
+        ax[k].set(xlabel="x0 down the slope (m)", ylabel=label, aspect="equal")
+    ax[0].axhline(args.corner_z, color="k", lw=0.8, ls="--")
+    ax[0].set_title("start shape from above, mean c/c0")
+    ax[1].set_title("start shape from the side, mean c/c0")
+    top = np.argsort(x1[:, 1])
+    ax[2].scatter(x1[top, 0], x1[top, 2], c=ratio[top], cmap="RdYlBu", vmin=0, vmax=1, s=4)
+    ax[2].set(title=f"t = {m['time']:.2f} s, seen from above", xlabel="x down the slope (m)",
+              ylabel="z across (m)", aspect="equal")
+    fig.colorbar(sc, ax=ax, label="c / c0 (crack where < 1)")
+    png = os.path.join(out, "cracks.png")
+    fig.savefig(png, dpi=120)
+    path = os.path.join(args.run, "cracks.json")
+    with open(path, "w") as f:
+        json.dump(m, f, indent=2)
+    print(png)
+    print(path)
+
+
+if __name__ == "__main__":
+    main()
