@@ -4,8 +4,9 @@
 //  - membranes.csv: time, the largest tension of all membranes, then per
 //    membrane its largest and mean (by rest length) tension, N/m;
 //  - membranes.pvd + .vtu: the nodes (FE) or points (York) with tension,
-//    strain and the membrane's index as "material" (3D surfaces: per node,
-//    the mean of its triangles' larger principal tension and strain).
+//    strain (tension / J) and the membrane's index as "material" (3D
+//    surfaces: per node, the mean of its triangles' larger principal
+//    tension).
 // Also keeps the peak tension and its time for summary.json.
 #include <filesystem>
 #include <memory>
