@@ -1,7 +1,9 @@
 // MPM checkpoints (mpm/checkpoint.hpp): a run saved, restored into a solver
 // built afresh from the same scenario and continued ends bit for bit where
 // the uninterrupted run ends, with cohesion loss and a turning rigid body in
-// play; a checkpoint that does not fit the scenario is refused.
+// play, and with membranes (2D FE cables and a York line, 3D triangles); a
+// checkpoint that does not fit the scenario, or of an older format, is
+// refused.
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <unistd.h>
@@ -9,6 +11,7 @@
 #include <filesystem>
 
 #include "talus/core/error.hpp"
+#include "talus/io/archive.hpp"
 #include "talus/mpm/checkpoint.hpp"
 #include "talus/mpm/scenario.hpp"
 
@@ -95,6 +98,114 @@ TEST(MpmCheckpoint, CheckpointOfAnotherScenarioIsRefused) {
   sc.rigid_bodies.clear();
   Solver<2> no_plate = build_mpm<2>(sc);
   EXPECT_THROW(load_checkpoint(no_plate, path), InputError);
+  std::filesystem::remove(path);
+}
+
+// Runs `steps`, saves, runs `steps` more; a solver built afresh, restored and
+// run `steps` must end with the same membranes, bit for bit.
+template <int D>
+void check_membranes_resume(const MpmScenario& sc, int steps, const std::string& tag) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("talus_mpm_checkpoint_" + tag + std::to_string(::getpid()) + ".bin");
+  Solver<D> full = build_mpm<D>(sc);
+  for (int k = 0; k < steps; ++k) full.advance();
+  save_checkpoint(full, path);
+  for (int k = 0; k < steps; ++k) full.advance();
+  Solver<D> resumed = build_mpm<D>(sc);
+  load_checkpoint(resumed, path);
+  for (int k = 0; k < steps; ++k) resumed.advance();
+  std::filesystem::remove(path);
+  EXPECT_EQ(resumed.time, full.time);
+  for (std::size_t i = 0; i < full.particles.size(); ++i)
+    ASSERT_EQ(resumed.particles.x[i], full.particles.x[i]) << i;
+  for (std::size_t b = 0; b < full.membranes.size(); ++b) {
+    const auto &m = full.membranes[b], &r = resumed.membranes[b];
+    // The membrane was loaded: its state mattered.
+    EXPECT_GT(m.max_tension(), 0.0) << tag << " " << m.name;
+    EXPECT_EQ(r.x, m.x) << m.name;
+    EXPECT_EQ(r.v, m.v) << m.name;
+    EXPECT_EQ(r.stretch, m.stretch) << m.name;
+    EXPECT_EQ(r.tangent, m.tangent) << m.name;
+  }
+}
+
+// The block of the test above falls into an FE bag (closed, cables) that
+// hangs on nothing, onto a York line held at both ends.
+TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
+  auto sc = block_on_turning_plate();
+  sc.rigid_bodies.clear();
+  MembraneParams bag;
+  bag.name = "bag";
+  bag.points = {Vec3(0.145, 0.115, 0.0), Vec3(0.255, 0.115, 0.0), Vec3(0.255, 0.175, 0.0),
+                Vec3(0.145, 0.175, 0.0)};
+  bag.closed = true;
+  bag.spacing = 0.005;
+  bag.stiffness = 2e4;
+  bag.mass_per_length = 0.5;
+  bag.velocity = Vec3(0.0, -1.0, 0.0);
+  MembraneParams line = bag;
+  line.name = "line";
+  line.model = MembraneModel::York;
+  line.points = {Vec3(0.03, 0.11, 0.0), Vec3(0.37, 0.11, 0.0)};
+  line.closed = false;
+  line.fixed = MembraneFixed::Both;
+  line.velocity = Vec3::Zero();
+  sc.membranes = {bag, line};
+  check_membranes_resume<2>(sc, 300, "2d");
+}
+
+// 3D: a block falls onto a sheet of triangles held by its edges.
+TEST(MpmCheckpoint, RunWithTriangleMembraneResumesBitForBit) {
+  MpmScenario sc;
+  sc.dimension = 3;
+  sc.solver.gravity = Vec3(0.0, 0.0, -10.0);
+  sc.grid.lo = Vec3::Zero();
+  sc.grid.hi = Vec3::Constant(0.3);
+  sc.grid.cell_size = 0.02;
+  sc.grid.faces.fill(BoundaryKind::Free);
+  MaterialParams m;
+  m.name = "block";
+  m.model = MaterialModel::LinearElastic;
+  m.density = 2000.0;
+  m.youngs_modulus = 1e6;
+  m.poisson_ratio = 0.3;
+  sc.materials = {m};
+  BodyParams b;
+  b.material = "block";
+  b.min = Vec3(0.12, 0.12, 0.16);
+  b.max = Vec3(0.18, 0.18, 0.2);
+  b.velocity = Vec3(0.0, 0.0, -1.0);
+  sc.bodies = {b};
+  MembraneParams p;
+  p.name = "sheet";
+  p.shape = MembraneShape::Sheet;
+  p.points = {Vec3(0.05, 0.05, 0.14), Vec3(0.25, 0.05, 0.14), Vec3(0.25, 0.25, 0.14),
+              Vec3(0.05, 0.25, 0.14)};
+  p.fixed = MembraneFixed::Edges;
+  p.spacing = 0.01;
+  p.stiffness = 2e4;
+  p.mass_per_length = 0.5;
+  p.poisson_ratio = 0.3;
+  sc.membranes = {p};
+  check_membranes_resume<3>(sc, 150, "3d");
+}
+
+// A checkpoint of format version 1 (before membranes were stored) is refused
+// with its version named.
+TEST(MpmCheckpoint, OlderFormatIsRefusedWithItsVersion) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("talus_mpm_checkpoint_v1_" + std::to_string(::getpid()) + ".bin");
+  io::ArchiveWriter w;
+  w.put("talus-mpm-checkpoint");
+  w.put(int32_t{1});
+  w.save(path);
+  Solver<2> s = build_mpm<2>(block_on_turning_plate());
+  try {
+    load_checkpoint(s, path);
+    ADD_FAILURE() << "version 1 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("version 1"), std::string::npos) << e.what();
+  }
   std::filesystem::remove(path);
 }
 

@@ -84,9 +84,101 @@ TEST(MpmMembraneScenario, BadInputNamesFileLineAndKey) {
                     "[[0.1, 0.1], [0.2, 0.1]]\n"
                     "[[membranes]]\nname = \"bag\""),
                "membrane 'bag' is defined twice");
-  // The MPM checkpoint holds no membrane nodes: a run that would write one is refused.
-  expect_error(kBase + "[output]\ncheckpoint_interval = 0.1\n",
-               "'checkpoint_interval': checkpoints of MPM runs with [[membranes]]");
+  expect_error(edit(kBase, "model = \"york\"", "model = \"york\"\nshape = \"sheet\""),
+               "[[membranes]] 'shape'");
+  expect_error(edit(kBase, "closed = true", "closed = true\npoisson_ratio = 0.3"),
+               "'poisson_ratio'");
+  // Checkpoints of runs with membranes are accepted (they hold the membranes).
+  EXPECT_NO_THROW(parse_mpm_scenario(
+      load_scenario_text(kBase + "[output]\ncheckpoint_interval = 0.1\n", "m.toml")));
+}
+
+// 3D: a sheet held by its edges, a box and a sphere (bags); the resolved
+// table reads back to the same values; bad input names the key.
+const std::string k3d = R"(method = "mpm"
+[run]
+dimension = 3
+duration = 0.5
+[grid]
+min = [0, 0, 0]
+max = [2, 2, 2]
+cell_size = 0.1
+[[materials]]
+name = "sand"
+model = "linear_elastic"
+density = 2000
+youngs_modulus = 1e6
+poisson_ratio = 0.3
+[[bodies]]
+material = "sand"
+box = { min = [0.5, 0.5, 0.5], max = [1.0, 1.0, 1.0] }
+[[membranes]]
+name = "net"
+shape = "sheet"
+points = [[0.2, 0.2, 1.5], [1.8, 0.2, 1.5], [1.8, 1.8, 1.6], [0.2, 1.8, 1.6]]
+fixed = "edges"
+stiffness = 1e4
+mass_per_length = 0.5
+poisson_ratio = 0.2
+[[membranes]]
+name = "bag"
+shape = "box"
+box = { min = [0.45, 0.45, 0.45], max = [1.05, 1.05, 1.05] }
+youngs_modulus = 1e9
+thickness = 2e-3
+density = 500
+slack = 0.1
+slack_box = { min = [0.4, 0.4, 0.4], max = [1.1, 1.1, 0.46] }
+[[membranes]]
+name = "ball"
+shape = "sphere"
+centre = [1.5, 1.5, 0.5]
+radius = 0.3
+stiffness = 1e4
+mass_per_length = 0.5
+)";
+
+TEST(MpmMembraneScenario, ThreeDimensionalSurfacesParseRoundTripAndBuild) {
+  const auto sc = parse_mpm_scenario(load_scenario_text(k3d, "m.toml"));
+  ASSERT_EQ(sc.membranes.size(), 3u);
+  EXPECT_EQ(sc.membranes[0].shape, mpm::MembraneShape::Sheet);
+  EXPECT_EQ(sc.membranes[0].fixed, mpm::MembraneFixed::Edges);
+  EXPECT_EQ(sc.membranes[0].poisson_ratio, 0.2);
+  EXPECT_EQ(sc.membranes[1].shape, mpm::MembraneShape::Box);
+  EXPECT_NEAR(sc.membranes[1].stiffness, 2e6, 1e-6);
+  EXPECT_EQ(sc.membranes[2].shape, mpm::MembraneShape::Sphere);
+  EXPECT_EQ(sc.membranes[2].radius, 0.3);
+  const std::string resolved = mpm_scenario_to_toml(sc);
+  const auto again = parse_mpm_scenario(load_scenario_text(resolved, "r.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump()) << resolved;
+  const auto solver = mpm::build_mpm<3>(sc);
+  ASSERT_EQ(solver.membranes.size(), 3u);
+  // Sheet: 1.6 m / 0.05 by 1.6 m (1.603 m along the tilted sides) / 0.05.
+  EXPECT_EQ(solver.membranes[0].size(), 33u * 33u);
+  // Box 0.6 m a side in pieces of 0.05 m: 13^3 - 11^3 lattice nodes.
+  EXPECT_EQ(solver.membranes[1].size(), 13u * 13u * 13u - 11u * 11u * 11u);
+  // The slack is on the triangles of the bottom face (centroids at z 0.45):
+  // their rest area is 1.1^2 times as drawn.
+  double area = 0.0;
+  for (double a : solver.membranes[1].rest_area) area += a;
+  EXPECT_NEAR(area, 5 * 0.36 + 1.21 * 0.36, 1e-12);
+}
+
+TEST(MpmMembraneScenario, ThreeDimensionalBadInputNamesTheKey) {
+  expect_error(edit(k3d, "shape = \"sheet\"\n", ""), "bad.toml:18: [[membranes]] 'shape'");
+  expect_error(edit(k3d, "shape = \"sheet\"", "shape = \"polyline\""), "'shape'");
+  expect_error(edit(k3d, "name = \"net\"", "name = \"net\"\nmodel = \"york\""), "'model'");
+  expect_error(edit(k3d, "[0.2, 1.8, 1.6]]", "]"), "'points': expected the sheet's 4 corners");
+  expect_error(edit(k3d, "[1.8, 1.8, 1.6]", "[1.0, 0.2, 1.5]"), "in a line");
+  expect_error(edit(k3d, "[1.8, 0.2, 1.5]", "[2.8, 0.2, 1.5]"), "outside the [grid]");
+  expect_error(edit(k3d, "fixed = \"edges\"", "fixed = \"first\""), "'fixed'");
+  expect_error(edit(k3d, "fixed = \"edges\"", "closed = true"), "'closed'");
+  expect_error(edit(k3d, "poisson_ratio = 0.2", "poisson_ratio = 1.0"), "'poisson_ratio'");
+  expect_error(edit(k3d, "shape = \"box\"", "shape = \"box\"\nfixed = \"edges\""), "'fixed'");
+  expect_error(edit(k3d, "shape = \"box\"", "shape = \"box\"\nradius = 1"), "'radius'");
+  expect_error(edit(k3d, "max = [1.05, 1.05, 1.05]", "max = [1.05, 1.05, 2.05]"), "'box'");
+  expect_error(edit(k3d, "radius = 0.3", "radius = 0.6"), "'radius'");
+  expect_error(edit(k3d, "centre = [1.5, 1.5, 0.5]\n", ""), "'centre'");
 }
 
 TEST(MpmMembraneScenario, BundledGeotextileBagBuilds) {

@@ -305,12 +305,6 @@ mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
     s.output.snapshot_interval = number_in(*out, "snapshot_interval", 0.0, non_negative());
     s.output.checkpoint_interval = number_in(*out, "checkpoint_interval", 0.0, non_negative());
     s.output.snapshots = out->boolean("snapshots", true);
-    // The checkpoint does not hold the membranes' nodes yet: a resumed run
-    // would restart them from the scenario, so refuse instead.
-    if (s.output.checkpoint_interval > 0 && !s.membranes.empty())
-      out->fail("checkpoint_interval",
-                "checkpoints of MPM runs with [[membranes]] are not supported yet: remove "
-                "checkpoint_interval or the membranes");
     out->finish();
   }
   root.finish();

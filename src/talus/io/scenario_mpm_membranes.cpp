@@ -1,6 +1,9 @@
 #include "talus/io/scenario_mpm_membranes.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
 
 namespace talus::io::detail {
 namespace {
@@ -10,7 +13,12 @@ const EnumNames<mpm::MembraneModel> kMembraneModels = {{"fe", mpm::MembraneModel
 const EnumNames<mpm::MembraneFixed> kMembraneEnds = {{"none", mpm::MembraneFixed::None},
                                                      {"first", mpm::MembraneFixed::First},
                                                      {"last", mpm::MembraneFixed::Last},
-                                                     {"both", mpm::MembraneFixed::Both}};
+                                                     {"both", mpm::MembraneFixed::Both},
+                                                     {"edges", mpm::MembraneFixed::Edges}};
+const EnumNames<mpm::MembraneShape> kMembraneShapes = {{"polyline", mpm::MembraneShape::Polyline},
+                                                       {"sheet", mpm::MembraneShape::Sheet},
+                                                       {"box", mpm::MembraneShape::Box},
+                                                       {"sphere", mpm::MembraneShape::Sphere}};
 
 // J from `stiffness`, or from `youngs_modulus` times `thickness`; mu from
 // `mass_per_length`, or from `density` times `thickness`.
@@ -33,12 +41,93 @@ void read_stiffness_and_mass(TomlReader& r, mpm::MembraneParams& m) {
 }
 
 void check_inside_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx,
-                       const std::vector<Vec3>& points) {
+                       const std::vector<Vec3>& points, std::string_view key = "points") {
   for (std::size_t i = 0; i < points.size(); ++i)
     for (int d = 0; d < ctx.dimension; ++d)
       if (points[i][d] < s.grid.lo[d] || points[i][d] > s.grid.hi[d])
-        r.fail("points", fmt::format("point {} ({}, {}) lies outside the [grid]", i + 1,
-                                     points[i].x(), points[i].y()));
+        r.fail(key,
+               fmt::format("point {} ({}) lies outside the [grid]", i + 1,
+                           fmt::join(points[i].data(), points[i].data() + ctx.dimension, ", ")));
+}
+
+// 2D: a polyline, open (ends may be fixed) or closed.
+void read_polyline(TomlReader& r, mpm::MembraneParams& m, const mpm::MpmScenario& s,
+                   const DemContext& ctx) {
+  m.points = r.vec3_list("points");
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (m.points[i].z() != 0.0)
+      r.fail("points", fmt::format("expected [x, y] points in a 2D run (point {})", i + 1));
+  m.closed = r.boolean("closed", false);
+  const std::size_t least = m.closed ? 3 : 2;
+  if (m.points.size() < least)
+    r.fail("points", fmt::format("expected at least {} points [x, y] for {} membrane", least,
+                                 m.closed ? "a closed" : "an open"));
+  for (std::size_t i = 0; i + 1 < m.points.size(); ++i)
+    if ((m.points[i + 1] - m.points[i]).norm() == 0.0)
+      r.fail("points", fmt::format("points {} and {} coincide", i + 1, i + 2));
+  check_inside_grid(r, s, ctx, m.points);
+  m.fixed = r.enumeration("fixed", kMembraneEnds, m.fixed);
+  if (m.fixed == mpm::MembraneFixed::Edges)
+    r.fail("fixed", "\"edges\" is for 3D sheets; a line has ends: \"first\", \"last\", \"both\"");
+  if (m.closed && m.fixed != mpm::MembraneFixed::None)
+    r.fail("fixed", "a closed membrane has no ends to fix (use \"none\")");
+}
+
+// 3D: a sheet of 4 corners (its edges may be fixed), or the closed surface of
+// a box or a sphere (a bag).
+void read_surface(TomlReader& r, mpm::MembraneParams& m, const mpm::MpmScenario& s,
+                  const DemContext& ctx) {
+  if (m.model != mpm::MembraneModel::FiniteElement)
+    r.fail("model", "York's membrane is 2D only; a 3D membrane is model = \"fe\" (triangles)");
+  if (!r.has("shape"))
+    r.missing("shape", "a 3D membrane is a surface: shape = \"sheet\", \"box\" or \"sphere\"");
+  m.shape = r.required_enum("shape", kMembraneShapes);
+  if (m.shape == mpm::MembraneShape::Polyline)
+    r.fail("shape", "a 3D membrane is a surface: \"sheet\", \"box\" or \"sphere\"");
+  r.reject({"closed"}, "is not used in 3D: a sheet is open, a box or a sphere closed");
+  if (m.shape != mpm::MembraneShape::Sheet) {
+    r.reject({"points"}, "is only used by shape = \"sheet\" (its 4 corners)");
+    r.reject({"fixed"}, "is only used by shape = \"sheet\" (a closed surface has no edges)");
+  }
+  if (m.shape != mpm::MembraneShape::Box) r.reject({"box"}, "is only used by shape = \"box\"");
+  if (m.shape != mpm::MembraneShape::Sphere)
+    r.reject({"centre", "radius"}, "is only used by shape = \"sphere\"");
+  m.closed = m.shape != mpm::MembraneShape::Sheet;
+  switch (m.shape) {
+    case mpm::MembraneShape::Sheet: {
+      m.points = r.vec3_list("points");
+      if (m.points.size() != 4)
+        r.fail("points", fmt::format("expected the sheet's 4 corners [x, y, z] in order, got {}",
+                                     m.points.size()));
+      check_inside_grid(r, s, ctx, m.points);
+      const auto& c = m.points;
+      // Each half of the quad must be a proper triangle.
+      for (auto [a, b, d] : {std::array{0, 1, 2}, std::array{0, 2, 3}}) {
+        const Vec3 u = c[b] - c[a], w = c[d] - c[a];
+        if (!(u.cross(w).norm() > 1e-9 * u.norm() * w.norm()))
+          r.fail("points", fmt::format("corners {}, {} and {} are in a line or coincide", a + 1,
+                                       b + 1, d + 1));
+      }
+      m.fixed = r.enumeration("fixed", kMembraneEnds, m.fixed);
+      if (m.fixed != mpm::MembraneFixed::None && m.fixed != mpm::MembraneFixed::Edges)
+        r.fail("fixed", "a sheet is held by all its edges (\"edges\") or not at all (\"none\")");
+      break;
+    }
+    case mpm::MembraneShape::Box:
+      read_box(r, "box", ctx, m.box_min, m.box_max);
+      check_inside_grid(r, s, ctx, {m.box_min, m.box_max}, "box");
+      break;
+    case mpm::MembraneShape::Sphere: {
+      m.centre = required_point(r, "centre", ctx);
+      m.radius = required_number_in(r, "radius", positive());
+      const Vec3 e = Vec3::Constant(m.radius);
+      check_inside_grid(r, s, ctx, {m.centre - e, m.centre + e}, "radius");
+      break;
+    }
+    case mpm::MembraneShape::Polyline:
+      break;
+  }
+  m.poisson_ratio = number_in(r, "poisson_ratio", 0.0, between(0.0, 1.0, false, true));
 }
 
 }  // namespace
@@ -53,26 +142,16 @@ mpm::MembraneParams read_mpm_membrane(TomlReader& r, std::size_t index, const mp
                                                   "OPQRSTUVWXYZ0123456789_-") == std::string::npos,
       "name", "a non-empty name of letters, digits, '_' and '-'");
   m.model = r.enumeration("model", kMembraneModels, m.model);
-  if (ctx.dimension != 2)
-    r.fail("model", "MPM membranes are 2D only (a chain of cables); this run has dimension 3");
-  m.points = r.vec3_list("points");
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (m.points[i].z() != 0.0)
-      r.fail("points", fmt::format("expected [x, y] points in a 2D run (point {})", i + 1));
-  m.closed = r.boolean("closed", false);
-  const std::size_t least = m.closed ? 3 : 2;
-  if (m.points.size() < least)
-    r.fail("points", fmt::format("expected at least {} points [x, y] for {} membrane", least,
-                                 m.closed ? "a closed" : "an open"));
-  for (std::size_t i = 0; i + 1 < m.points.size(); ++i)
-    if ((m.points[i + 1] - m.points[i]).norm() == 0.0)
-      r.fail("points", fmt::format("points {} and {} coincide", i + 1, i + 2));
-  check_inside_grid(r, s, ctx, m.points);
+  if (ctx.dimension == 3) {
+    read_surface(r, m, s, ctx);
+  } else {
+    if (r.enumeration("shape", kMembraneShapes, m.shape) != mpm::MembraneShape::Polyline)
+      r.fail("shape", "sheets, boxes and spheres are 3D; a 2D membrane is a polyline");
+    r.reject({"poisson_ratio"}, "is only used by 3D membranes (triangles)");
+    read_polyline(r, m, s, ctx);
+  }
   m.spacing = number_in(r, "spacing", 0.5 * s.grid.cell_size, positive());
   read_stiffness_and_mass(r, m);
-  m.fixed = r.enumeration("fixed", kMembraneEnds, m.fixed);
-  if (m.closed && m.fixed != mpm::MembraneFixed::None)
-    r.fail("fixed", "a closed membrane has no ends to fix (use \"none\")");
   m.slack = number_in(r, "slack", 0.0, non_negative());
   if (r.has("slack_box")) {
     if (m.slack == 0.0) r.fail("slack_box", "is only used with slack > 0");
@@ -93,15 +172,25 @@ nlohmann::ordered_json mpm_membrane_table(const mpm::MembraneParams& m, int dime
   };
   J points = J::array();
   for (const auto& p : m.points) points.push_back(point(p));
-  J t = {{"name", m.name},
-         {"model", name_of(kMembraneModels, m.model)},
-         {"points", points},
-         {"closed", m.closed},
-         {"spacing", m.spacing},
-         {"stiffness", m.stiffness},
-         {"mass_per_length", m.mass_per_length},
-         {"fixed", name_of(kMembraneEnds, m.fixed)},
-         {"slack", m.slack}};
+  J t = {{"name", m.name}, {"model", name_of(kMembraneModels, m.model)}};
+  if (dimension == 3) {
+    t["shape"] = name_of(kMembraneShapes, m.shape);
+    if (m.shape == mpm::MembraneShape::Sheet) t["points"] = points;
+    if (m.shape == mpm::MembraneShape::Box)
+      t["box"] = {{"min", point(m.box_min)}, {"max", point(m.box_max)}};
+    if (m.shape == mpm::MembraneShape::Sphere)
+      t["centre"] = point(m.centre), t["radius"] = m.radius;
+  } else {
+    t["points"] = points;
+    t["closed"] = m.closed;
+  }
+  t["spacing"] = m.spacing;
+  t["stiffness"] = m.stiffness;
+  t["mass_per_length"] = m.mass_per_length;
+  if (dimension == 3) t["poisson_ratio"] = m.poisson_ratio;
+  if (dimension == 2 || m.shape == mpm::MembraneShape::Sheet)
+    t["fixed"] = name_of(kMembraneEnds, m.fixed);
+  t["slack"] = m.slack;
   if (!m.slack_everywhere)
     t["slack_box"] = {{"min", point(m.slack_min)}, {"max", point(m.slack_max)}};
   t["velocity"] = point(m.velocity);

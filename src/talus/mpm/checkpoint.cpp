@@ -1,5 +1,7 @@
 #include "talus/mpm/checkpoint.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdint>
 
 #include "talus/core/error.hpp"
@@ -9,7 +11,8 @@ namespace talus::mpm {
 
 namespace {
 constexpr const char* kMagic = "talus-mpm-checkpoint";
-constexpr int32_t kVersion = 1;
+// 2: the membranes' state follows the rigid bodies (version 1 had none).
+constexpr int32_t kVersion = 2;
 
 // One function serves both directions so the two can never drift apart. The
 // material states go field by field (bool is not archivable as a vector).
@@ -20,6 +23,14 @@ void transfer(Ar& ar, S& s) {
   ar(p.x), ar(p.v), ar(p.mass), ar(p.volume), ar(p.volume0), ar(p.velocity_gradient),
       ar(p.material), ar(p.affine);
   for (auto& r : s.rigid_bodies) ar(r.x), ar(r.normal), ar(r.hinge), ar(r.angle);
+  // All of a membrane's state; what the scenario rebuilds (masses, rest
+  // shapes, fixed nodes) goes too, so a resumed run cannot depend on
+  // rebuilding it bit for bit.
+  for (auto& m : s.membranes) {
+    ar(m.x), ar(m.v), ar(m.mass), ar(m.fixed), ar(m.rest_length);
+    ar(m.tangent), ar(m.stretch), ar(m.velocity_gradient);
+    ar(m.triangles), ar(m.rest_inverse), ar(m.rest_area);
+  }
 }
 
 struct Saver {
@@ -54,6 +65,9 @@ void save_checkpoint(const Solver<D>& s, const std::filesystem::path& path) {
   w.put(static_cast<int32_t>(D));
   w.put(static_cast<int64_t>(s.particles.size()));
   w.put(static_cast<int32_t>(s.rigid_bodies.size()));
+  w.put(static_cast<int32_t>(s.membranes.size()));
+  for (const auto& m : s.membranes)
+    w.put(static_cast<int64_t>(m.size())), w.put(static_cast<int64_t>(m.carriers()));
   Saver save{w};
   transfer<D>(save, const_cast<Solver<D>&>(s));
   StateColumns c;
@@ -74,12 +88,23 @@ void load_checkpoint(Solver<D>& s, const std::filesystem::path& path) {
   const std::string where = path.string() + ": ";
   io::ArchiveReader r(path);
   if (r.get<std::string>() != kMagic) throw InputError(where + "not a talus MPM checkpoint");
-  if (r.get<int32_t>() != kVersion) throw InputError(where + "checkpoint format version differs");
+  if (const auto version = r.get<int32_t>(); version != kVersion)
+    throw InputError(where + fmt::format("checkpoint format version {} is not this talus's {} "
+                                         "(written by another version): rerun from the start",
+                                         version, kVersion));
   if (r.get<int32_t>() != D) throw InputError(where + "checkpoint has another dimension");
   if (r.get<int64_t>() != static_cast<int64_t>(s.particles.size()))
     throw InputError(where + "checkpoint has another number of material points than the scenario");
   if (r.get<int32_t>() != static_cast<int32_t>(s.rigid_bodies.size()))
     throw InputError(where + "checkpoint has another number of rigid bodies than the scenario");
+  if (r.get<int32_t>() != static_cast<int32_t>(s.membranes.size()))
+    throw InputError(where + "checkpoint has another number of membranes than the scenario");
+  for (const auto& m : s.membranes)
+    if (r.get<int64_t>() != static_cast<int64_t>(m.size()) ||
+        r.get<int64_t>() != static_cast<int64_t>(m.carriers()))
+      throw InputError(where + fmt::format("membrane '{}' has other nodes or carriers than in the "
+                                           "checkpoint",
+                                           m.name));
   Loader load{r};
   transfer<D>(load, s);
   StateColumns c;
@@ -89,6 +114,10 @@ void load_checkpoint(Solver<D>& s, const std::filesystem::path& path) {
   if (s.particles.x.size() != n || s.particles.affine.size() != n || c.stress.size() != n ||
       c.yielding.size() != n)
     throw InputError(where + "inconsistent point tables");
+  for (const auto& m : s.membranes)
+    if (m.v.size() != m.size() || m.mass.size() != m.size() || m.fixed.size() != m.size() ||
+        m.rest_area.size() != m.triangles.size() || m.rest_inverse.size() != m.triangles.size())
+      throw InputError(where + "inconsistent membrane tables");
   for (std::size_t i = 0; i < n; ++i) {
     auto& st = s.particles.state[i];
     st.stress = c.stress[i];

@@ -2,7 +2,8 @@
 // Checkpoints of an MPM run: everything a step reads that is not rebuilt from
 // the scenario (time, step count, the material points with their constitutive
 // state and cohesion, the APIC affine matrices, the positions of the rigid
-// bodies' boundary particles), so that a resumed run continues bit for bit
+// bodies' boundary particles, the membranes' nodes or points with York's
+// tangents and stretches), so that a resumed run continues bit for bit
 // like an uninterrupted one on the same number of threads. The grid is reset
 // every step and is not stored.
 #include <filesystem>

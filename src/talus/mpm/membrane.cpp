@@ -9,8 +9,30 @@
 
 namespace talus::mpm {
 
+namespace {
+
+// Triangle k of a 3D surface (surfaces exist only for D == 3).
+template <int D>
+std::array<Vec3, 3> triangle_nodes(const Membrane<D>& m, std::size_t k) {
+  if constexpr (D == 3) {
+    const auto& t = m.triangles[k];
+    return {m.x[t[0]], m.x[t[1]], m.x[t[2]]};
+  } else {
+    return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  }
+}
+
+template <int D>
+TriangleTension triangle_state(const Membrane<D>& m, std::size_t k) {
+  return triangle_tension(triangle_nodes(m, k), {m.rest_inverse[k], m.rest_area[k]}, m.stiffness,
+                          m.poisson_ratio);
+}
+
+}  // namespace
+
 template <int D>
 std::size_t Membrane<D>::carriers() const {
+  if (surface()) return triangles.size();
   if (model == MembraneModel::York) return x.size();
   if (x.size() < 2) return 0;
   return closed ? x.size() : x.size() - 1;
@@ -18,9 +40,16 @@ std::size_t Membrane<D>::carriers() const {
 
 template <int D>
 double Membrane<D>::strain(std::size_t k) const {
+  if (surface()) return triangle_state(*this, k).e1;
   if (model == MembraneModel::York) return stretch[k] - 1.0;
   const std::size_t b = k + 1 == x.size() ? 0 : k + 1;
   return (x[b] - x[k]).norm() / rest_length[k] - 1.0;
+}
+
+template <int D>
+double Membrane<D>::tension(std::size_t k) const {
+  if (surface()) return triangle_state(*this, k).n1;
+  return stiffness * std::max(strain(k), 0.0);
 }
 
 template <int D>
@@ -33,15 +62,27 @@ double Membrane<D>::max_tension() const {
 template <int D>
 double Membrane<D>::mean_tension() const {
   double sum = 0.0, length = 0.0;
+  const auto& measure = surface() ? rest_area : rest_length;
   for (std::size_t k = 0; k < carriers(); ++k) {
-    sum += tension(k) * rest_length[k];
-    length += rest_length[k];
+    sum += tension(k) * measure[k];
+    length += measure[k];
   }
   return length > 0.0 ? sum / length : 0.0;
 }
 
 template <int D>
 void Membrane<D>::add_cable_forces(std::vector<Vec>& f) const {
+  if constexpr (D == 3) {
+    if (surface()) {
+      std::array<Vec3, 3> ft;
+      for (std::size_t k = 0; k < triangles.size(); ++k) {
+        triangle_forces(triangle_nodes(*this, k), {rest_inverse[k], rest_area[k]}, stiffness,
+                        poisson_ratio, ft);
+        for (int a = 0; a < 3; ++a) f[triangles[k][a]] += ft[a];
+      }
+      return;
+    }
+  }
   for (std::size_t k = 0; k < carriers(); ++k) {
     const std::size_t b = k + 1 == x.size() ? 0 : k + 1;
     const Vec d = x[b] - x[k];
@@ -68,7 +109,9 @@ void Membrane<D>::update_york_strain(double dt) {
 
 template <int D>
 double Membrane<D>::wave_speed() const {
-  return mass_per_length > 0.0 ? std::sqrt(stiffness / mass_per_length) : 0.0;
+  if (!(mass_per_length > 0.0)) return 0.0;
+  const double nu2 = surface() ? poisson_ratio * poisson_ratio : 0.0;
+  return std::sqrt(stiffness / ((1.0 - nu2) * mass_per_length));
 }
 
 template <int D>
@@ -92,6 +135,11 @@ bool in_box(const typename Space<D>::Vec& y, const MembraneParams& p) {
 template <int D>
 Membrane<D> build_membrane(const MembraneParams& p, double cell_size) {
   using Vec = typename Space<D>::Vec;
+  if constexpr (D == 3) {
+    if (p.shape != MembraneShape::Polyline) return build_surface_membrane(p, cell_size);
+  }
+  if (p.shape != MembraneShape::Polyline)
+    throw InputError(fmt::format("membrane '{}': sheets, boxes and spheres are 3D only", p.name));
   Membrane<D> m;
   m.name = p.name;
   m.model = p.model;

@@ -10,28 +10,45 @@
 //  - The coupled FE membrane (Hamad): a chain of 2-node cables whose nodes move
 //    like material points; each cable's tension comes from its own nodes,
 //    T = J max(eps, 0), eps = l / l0 - 1, J = E t, and the nodal forces are
-//    mapped to the grid.
+//    mapped to the grid. In 3D the FE membrane is a surface of 3-node
+//    tension-only triangles instead (membrane_triangle.hpp): a sheet, or a
+//    closed box or sphere surface (a bag), meshed by membrane_surface.cpp.
 // In 2D everything is per metre of depth: J in N/m, mass per length in kg/m
-// per m (kg/m^2), tension T in N/m. The cables are D-generic (a 3D cable is
-// still a line); 3D triangle membranes are not implemented.
+// per m (kg/m^2), tension T in N/m. In 3D J is in N/m, the mass per area in
+// kg/m^2 (mass_per_length holds it) and T is per unit width, N/m. York's
+// model is 2D only.
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "talus/core/space.hpp"
+#include "talus/mpm/membrane_triangle.hpp"
 
 namespace talus::mpm {
 
 enum class MembraneModel { FiniteElement, York };
 
-// Which ends of an open membrane are held in place.
-enum class MembraneFixed { None, First, Last, Both };
+// Which ends of an open membrane are held in place (Edges: the whole boundary
+// of a 3D sheet).
+enum class MembraneFixed { None, First, Last, Both, Edges };
+
+// What a membrane is drawn as: a polyline (2D), or in 3D a sheet (the
+// bilinear surface of 4 corners), the surface of a box, or a sphere.
+enum class MembraneShape { Polyline, Sheet, Box, Sphere };
 
 // A membrane as read from a scenario: a polyline (closed or not) resampled to
-// nodes `spacing` apart along each edge.
+// nodes `spacing` apart along each edge, or a 3D surface meshed into
+// triangles with edges about `spacing` long.
 struct MembraneParams {
   std::string name;
   MembraneModel model = MembraneModel::FiniteElement;
-  std::vector<Vec3> points;
+  MembraneShape shape = MembraneShape::Polyline;
+  std::vector<Vec3> points;  // the polyline, or the sheet's 4 corners in order
+  Vec3 box_min = Vec3::Zero(), box_max = Vec3::Zero();  // Box
+  Vec3 centre = Vec3::Zero();                           // Sphere
+  double radius = 0.0;
+  double poisson_ratio = 0.0;  // of the 3D triangles
   bool closed = false;
   double spacing = 0.0;          // m along the polyline; <= 0: half a cell
   double stiffness = 0.0;        // J = E t, N/m
@@ -39,7 +56,8 @@ struct MembraneParams {
   MembraneFixed fixed = MembraneFixed::None;
   // Slack (folds, Hamad's "extra material at the bag bottom"): the rest length
   // of the cables whose midpoints lie in the box is (1 + slack) times their
-  // length as drawn, so they carry no tension until stretched by that much.
+  // length as drawn, so they carry no tension until stretched by that much
+  // (3D: the triangles whose centroids lie in it, scaled alike).
   double slack = 0.0;
   bool slack_everywhere = true;  // else only inside [slack_min, slack_max]
   Vec3 slack_min = Vec3::Zero(), slack_max = Vec3::Zero();
@@ -55,7 +73,8 @@ struct Membrane {
   MembraneModel model = MembraneModel::FiniteElement;
   bool closed = false;
   double stiffness = 0.0;        // J, N/m
-  double mass_per_length = 0.0;  // mu, kg/m
+  double mass_per_length = 0.0;  // mu, kg/m (3D surfaces: kg/m^2)
+  double poisson_ratio = 0.0;    // 3D surfaces
 
   // Nodes (FE) or material points (York).
   std::vector<Vec> x, v;
@@ -69,30 +88,42 @@ struct Membrane {
   std::vector<Vec> tangent;
   std::vector<double> stretch;
   std::vector<Mat> velocity_gradient;
+  // 3D FE surfaces: the triangles' nodes, rest shapes and rest areas (slack
+  // included). Empty for cables and York lines.
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<Eigen::Matrix2d> rest_inverse;
+  std::vector<double> rest_area;
 
   std::size_t size() const { return x.size(); }
-  // Number of tension carriers: cables (FE) or points (York).
+  bool surface() const { return !triangles.empty(); }
+  // Number of tension carriers: cables (FE), points (York) or triangles.
   std::size_t carriers() const;
-  // Strain and tension J max(eps, 0) of carrier k.
+  // Strain and tension J max(eps, 0) of carrier k; for a triangle its larger
+  // principal strain and tension (membrane_triangle.hpp).
   double strain(std::size_t k) const;
-  double tension(std::size_t k) const { return stiffness * std::max(strain(k), 0.0); }
+  double tension(std::size_t k) const;
   double max_tension() const;
-  // Mean tension weighted by rest length.
+  // Mean tension weighted by rest length (triangles: rest area).
   double mean_tension() const;
-  // FE: the forces of the cables on their nodes, added to f (size()).
+  // FE: the forces of the cables or triangles on their nodes, added to f
+  // (size()).
   void add_cable_forces(std::vector<Vec>& f) const;
   // York: advances tangent and stretch with the velocity gradient over dt.
   void update_york_strain(double dt);
-  // Speed of tension waves along the membrane, sqrt(J / mu).
+  // Speed of tension waves along the membrane, sqrt(J / mu) (surfaces:
+  // sqrt(J / ((1 - nu^2) mu)), the in-plane P wave).
   double wave_speed() const;
   double total_mass() const;
 };
 
 // Nodes (FE) or points (York) of a membrane: the polyline resampled to the
-// spacing, rest lengths with the slack, masses from mass_per_length. Throws
-// InputError for a polyline of zero length or a spacing that leaves an edge
-// without a node.
+// spacing, rest lengths with the slack, masses from mass_per_length; in 3D
+// the meshed surface (build_surface_membrane). Throws InputError for a
+// polyline of zero length or a spacing that leaves an edge without a node.
 template <int D>
 Membrane<D> build_membrane(const MembraneParams& p, double cell_size);
+
+// A 3D FE surface (shape Sheet, Box or Sphere), membrane_surface.cpp.
+Membrane<3> build_surface_membrane(const MembraneParams& p, double cell_size);
 
 }  // namespace talus::mpm

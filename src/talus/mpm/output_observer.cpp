@@ -38,6 +38,7 @@ MpmOutputs<D>::MpmOutputs(std::filesystem::path dir, std::vector<double> c0, boo
 template <int D>
 void MpmOutputs<D>::on_checkpoint(const Solver<D>& s) {
   series_->flush();
+  if (membranes_) membranes_->flush();
   save_checkpoint(s, checkpoint_path(dir_));
 }
 
@@ -50,7 +51,7 @@ double MpmOutputs<D>::c_ratio(const Solver<D>& s, std::size_t p) const {
 template <int D>
 MembraneOutputs<D>* MpmOutputs<D>::membranes(const Solver<D>& s) {
   if (!membranes_ && !s.membranes.empty())
-    membranes_ = std::make_unique<MembraneOutputs<D>>(dir_, s.membranes);
+    membranes_ = std::make_unique<MembraneOutputs<D>>(dir_, s.membranes, resume_, resume_time_);
   return membranes_.get();
 }
 
