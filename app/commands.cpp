@@ -102,8 +102,11 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   std::unique_ptr<analysis::TriaxialObserver> triaxial;
   if constexpr (D == 3) {
     if (sc.triaxial) {
-      triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system);
-      observers.push_back(triaxial.get());
+      triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system, resume,
+                                                              run->system.time);
+      // Before the outputs, whose on_checkpoint writes the checkpoint: a run
+      // killed in between then has triaxial.csv flushed up to it.
+      observers.insert(observers.begin(), triaxial.get());
     }
   }
   try {

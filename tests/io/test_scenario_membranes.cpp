@@ -94,6 +94,17 @@ material = "rubber"
   EXPECT_DOUBLE_EQ(b.membranes[1].height, 0.1);
   EXPECT_DOUBLE_EQ(b.membranes[0].size_y, 0.04);
   EXPECT_DOUBLE_EQ(b.membranes[0].pressure, -9e4);
+  EXPECT_FALSE(b.membranes[0].self_contact);
+}
+
+TEST(MembraneScenario, SelfContactIsOptInAndSurvivesTheRoundTrip) {
+  const std::string text =
+      edit(kHead + kSheet, "fixed = \"edge\"", "fixed = \"edge\"\nself_contact = true");
+  const auto a = parse_dem_scenario(load_scenario_text(text, "a.toml"));
+  ASSERT_EQ(a.membranes.size(), 1u);
+  EXPECT_TRUE(a.membranes[0].self_contact);
+  const auto b = parse_dem_scenario(load_scenario_text(scenario_to_toml(a), "b.toml"));
+  EXPECT_TRUE(b.membranes[0].self_contact);
 }
 
 class BadMembrane : public testing::TestWithParam<BadCase> {};
@@ -147,8 +158,9 @@ INSTANTIATE_TEST_SUITE_P(
                           "mesh = \"geodesic_sphere\"\nradius = 0.04\nfrequency = 4"),
                      "fixed = \"edge\"", "fixed = \"edge\" # <-"),
                 "fixed", "a closed membrane has no edge"},
-        BadCase{"checkpoints", kGood + "[output]\ncheckpoint_interval = 0.01 # <-\n",
-                "checkpoint_interval", "not implemented yet"},
+        BadCase{"self_contact_not_boolean",
+                edit(kGood, "fixed = \"edge\"", "fixed = \"edge\"\nself_contact = 1 # <-"),
+                "self_contact", "true or false"},
         BadCase{"linear_model",
                 edit(edit(edit(edit(kGood, "model = \"viscoelastic_hertz\"", "model = \"linear\""),
                                "dissipation = 1e-4", "normal_stiffness = 1e5"),

@@ -113,6 +113,14 @@ TEST(TriaxialScenario, ResolvedScenarioKeepsTheKeys) {
   expect_same(parse_dem_scenario(load_scenario_text(scenario_to_toml(a), "b.toml")));
 }
 
+// Servo walls and membranes are checkpointed since checkpoint version 4
+// (dem/checkpoint.cpp); tests/app/test_resume_membrane.sh resumes such a run.
+TEST(TriaxialScenario, CheckpointsAreAccepted) {
+  const auto s = parse_dem_scenario(
+      load_scenario_text(kTriaxial + "[output]\ncheckpoint_interval = 0.01\n", "tri.toml"));
+  EXPECT_DOUBLE_EQ(s.output.checkpoint_interval, 0.01);
+}
+
 TEST(TriaxialScenario, BundledCaseParses) {
   const auto s = parse_dem_scenario(
       load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/triaxial_case1.toml", {}));
@@ -177,9 +185,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"membrane_not_confining",
                 edit(edit(kTriaxial, "pressure = -1e5", "pressure = 1e5"), "membrane = \"sleeve\"",
                      "membrane = \"sleeve\" # <-"),
-                "membrane", "confining pressure < 0"},
-        BadCase{"servo_checkpoints", kTriaxial + "[output]\ncheckpoint_interval = 0.01 # <-\n",
-                "checkpoint_interval", "not implemented yet"}),
+                "membrane", "confining pressure < 0"}),
     [](const testing::TestParamInfo<BadCase>& info) { return info.param.name; });
 
 }  // namespace

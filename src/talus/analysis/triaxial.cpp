@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
+#include "talus/io/csv_reader.hpp"
 
 namespace talus::analysis {
 
@@ -56,19 +57,54 @@ double membrane_mean_radius(const dem::DemSystem<3>& s, const TriaxialSetup& t, 
 }
 
 TriaxialObserver::TriaxialObserver(std::filesystem::path out, const dem::DemScenario& sc,
-                                   const dem::DemSystem<3>& s)
+                                   const dem::DemSystem<3>& s, bool resume, double resume_time)
     : setup_(make_triaxial_setup(sc, s)) {
   const auto& m = s.membranes[setup_.membrane].body;
   axis_ = Vec3::Zero();
   for (const Vec3& q : m.anchor) axis_ += q;
   if (!m.anchor.empty()) axis_ /= static_cast<double>(m.anchor.size());
   std::filesystem::create_directories(out);
+  if (resume) {
+    io::CsvSeries::truncate_after(out / "triaxial.csv", resume_time);
+    restore(out, s);
+  }
   csv_ = std::make_unique<io::CsvSeries>(
       out / "triaxial.csv",
       std::vector<std::string>{"time", "phase", "gap", "eps", "p_bottom", "p_top", "p_plates",
                                "p_confining", "sigma_d", "membrane_radius"},
-      false);
+      resume);
 }
+
+void TriaxialObserver::restore(const std::filesystem::path& out, const dem::DemSystem<3>& s) {
+  const io::CsvTable tri = io::read_csv(out / "triaxial.csv");
+  const io::CsvTable series = io::read_csv(out / "series.csv");
+  if (tri.rows.empty() || series.rows.empty() ||
+      tri.rows.back()[0] != series.rows.back()[series.column("time")])
+    throw RunError(
+        fmt::format("{}: cannot resume the triaxial record: it does not end with "
+                    "series.csv at the checkpoint",
+                    (out / "triaxial.csv").string()));
+  const auto& last = series.rows.back();
+  const int plates[2] = {setup_.bottom, setup_.top};
+  for (int k = 0; k < 2; ++k)
+    for (int d = 0; d < 3; ++d)
+      last_impulse_[k][d] = last[series.column(s.walls[plates[k]].name + "_impulse_" + "xyz"[d])];
+  last_time_ = tri.rows.back()[0];
+  const std::size_t phase = tri.column("phase"), eps = tri.column("eps"),
+                    p_plates = tri.column("p_plates"), sigma = tri.column("sigma_d");
+  // The same updates as on_series, in the same order.
+  for (const auto& row : tri.rows) {
+    if (row[phase] != 1.0) continue;
+    if (h0_ < 0) {
+      h0_ = gap_at_servo_stop(s, setup_);
+      p_at_h0_ = row[p_plates];
+    }
+    if (row[sigma] > peak_sigma_) peak_sigma_ = row[sigma], peak_eps_ = row[eps];
+    last_eps_ = row[eps];
+  }
+}
+
+void TriaxialObserver::on_checkpoint(const dem::DemRun<3>&) { csv_->flush(); }
 
 void TriaxialObserver::on_series(const dem::DemRun<3>& run) {
   const auto& s = run.system;

@@ -42,14 +42,26 @@ double membrane_mean_radius(const dem::DemSystem<3>& s, const TriaxialSetup& t, 
 
 class TriaxialObserver final : public dem::DemObserver<3> {
  public:
+  // resume = true continues the triaxial.csv of a run resumed at
+  // resume_time (the system as restored from its checkpoint), after the run's
+  // DemOutputs has cut series.csv back to that time: the observer's state is
+  // read back from both files (see restore()).
   TriaxialObserver(std::filesystem::path out, const dem::DemScenario& sc,
-                   const dem::DemSystem<3>& s);
+                   const dem::DemSystem<3>& s, bool resume = false, double resume_time = 0.0);
   void on_series(const dem::DemRun<3>& run) override;
+  // Flushes triaxial.csv: a resumed run reads it back up to the checkpoint.
+  void on_checkpoint(const dem::DemRun<3>& run) override;
   // h0, the pressures at the switch, the peak deviator stress and its strain,
   // the final strain: for summary.json.
   nlohmann::json finish() const;
 
  private:
+  // The state of the last on_series before the checkpoint, from the rows
+  // written then (shortest round-trip text, so exact): the plates' impulses
+  // from series.csv, h0, the pressures at the switch and the peak from
+  // triaxial.csv. Throws RunError when the two files do not end at the same time.
+  void restore(const std::filesystem::path& out, const dem::DemSystem<3>& s);
+
   TriaxialSetup setup_;
   Vec3 axis_;  // a point on the membrane's axis (x, y of its centre)
   std::unique_ptr<io::CsvSeries> csv_;

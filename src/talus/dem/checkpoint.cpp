@@ -1,5 +1,7 @@
 #include "talus/dem/checkpoint.hpp"
 
+#include <fmt/format.h>
+
 #include "talus/core/error.hpp"
 #include "talus/io/archive.hpp"
 
@@ -7,7 +9,8 @@ namespace talus::dem {
 
 namespace {
 constexpr const char* kMagic = "talus-dem-checkpoint";
-constexpr int32_t kVersion = 3;
+// 4: membranes (state and contact springs) and the walls' servo state.
+constexpr int32_t kVersion = 4;
 
 struct PairIndex {
   int32_t i, j;
@@ -25,6 +28,25 @@ void transfer(Ar& ar, System& s) {
   auto& nl = s.neighbours;
   ar(nl.wall_start), ar(nl.wall_prim), ar(nl.builds);
   ar(nl.reference_positions());
+}
+
+// The friction springs of one membrane's contacts.
+template <class Ar>
+void transfer_memory(Ar& ar, membrane::ContactMemory::Saved& m) {
+  ar(m.grain), ar(m.feature), ar(m.point), ar(m.shear), ar(m.roll);
+}
+
+// Everything of a membrane that evolves, or that the first half kick after a
+// resume reads (the forces f). The mesh, masses and material come from the
+// scenario. Rest shape, pressure and the pinned particles do not change in a
+// run today; they are stored all the same, so that a protocol that changes
+// them (pre-tension, a stepped vacuum) resumes correctly.
+template <class Ar>
+void transfer_membrane(Ar& ar, membrane::MembraneBody& mb) {
+  auto& m = mb.body;
+  ar(m.x), ar(m.v), ar(m.f), ar(m.fixed), ar(m.follows), ar(m.anchor);
+  ar(m.rest.length), ar(m.rest.sin_half_angle), ar(m.params.pressure);
+  ar(mb.reaction), ar(mb.contacts), ar(mb.self_contacts);
 }
 
 template <int D>
@@ -47,13 +69,12 @@ struct Loader {
 
 template <int D>
 void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
-  if (!s.membranes.empty())
-    throw RunError("checkpoints of runs with [[membranes]] are not implemented yet");
   io::ArchiveWriter w;
   w.put(kMagic);
   w.put(kVersion);
   w.put(static_cast<int32_t>(D));
   w.put(static_cast<int32_t>(s.walls.size()));
+  w.put(static_cast<int32_t>(s.membranes.size()));
   Saver<D> save{w};
   transfer<D>(save, const_cast<DemSystem<D>&>(s));
   const auto& nl = s.neighbours;
@@ -66,21 +87,35 @@ void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
   for (const auto& h : nl.wall_history) wshear.push_back(h.shear), wroll.push_back(h.roll);
   w.put(pairs), w.put(shear), w.put(roll), w.put(wshear), w.put(wroll);
   w.put(nl.skin());
-  for (const auto& wall : s.walls) w.put(wall.force), w.put(wall.torque), w.put(wall.impulse);
+  for (const auto& wall : s.walls) {
+    w.put(wall.force), w.put(wall.torque), w.put(wall.impulse);
+    w.put(wall.servo_travel), w.put(wall.servo_speed);
+  }
+  for (const auto& mb : s.membranes) {
+    w.put(mb.name);
+    w.put(static_cast<int64_t>(mb.body.x.size()));
+    transfer_membrane(save, const_cast<membrane::MembraneBody&>(mb));
+    auto springs = mb.memory.saved(), self_springs = mb.self_memory.saved();
+    transfer_memory(save, springs);
+    transfer_memory(save, self_springs);
+  }
   w.save(path);
 }
 
 template <int D>
 void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
   const std::string where = path.string() + ": ";
-  if (!s.membranes.empty())
-    throw InputError(where + "runs with [[membranes]] cannot resume from a checkpoint yet");
   io::ArchiveReader r(path);
   if (r.get<std::string>() != kMagic) throw InputError(where + "not a talus DEM checkpoint");
-  if (r.get<int32_t>() != kVersion) throw InputError(where + "checkpoint format version differs");
+  if (const int32_t v = r.get<int32_t>(); v != kVersion)
+    throw InputError(where + fmt::format("checkpoint format version {}, this talus reads version "
+                                         "{} (written by another talus: rerun from the start)",
+                                         v, kVersion));
   if (r.get<int32_t>() != D) throw InputError(where + "checkpoint has another dimension");
   if (r.get<int32_t>() != static_cast<int32_t>(s.walls.size()))
     throw InputError(where + "checkpoint has another number of walls than the scenario");
+  if (r.get<int32_t>() != static_cast<int32_t>(s.membranes.size()))
+    throw InputError(where + "checkpoint has another number of membranes than the scenario");
   Loader<D> load{r};
   transfer<D>(load, s);
   auto& nl = s.neighbours;
@@ -101,7 +136,33 @@ void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
     nl.wall_history[k].shear = wshear[k];
     nl.wall_history[k].roll = wroll[k];
   }
-  for (auto& wall : s.walls) r.get(wall.force), r.get(wall.torque), r.get(wall.impulse);
+  for (auto& wall : s.walls) {
+    r.get(wall.force), r.get(wall.torque), r.get(wall.impulse);
+    r.get(wall.servo_travel), r.get(wall.servo_speed);
+  }
+  for (auto& mb : s.membranes) {
+    const auto name = r.get<std::string>();
+    const auto n = r.get<int64_t>();
+    if (name != mb.name || n != static_cast<int64_t>(mb.body.x.size()))
+      throw InputError(where + fmt::format("checkpoint has membrane '{}' with {} particles where "
+                                           "the scenario has '{}' with {}",
+                                           name, n, mb.name, mb.body.x.size()));
+    transfer_membrane(load, mb);
+    const std::size_t nv = mb.body.x.size(), ne = mb.body.mesh.edges.size();
+    if (mb.body.v.size() != nv || mb.body.f.size() != nv || mb.body.fixed.size() != nv ||
+        mb.body.follows.size() != nv || mb.body.anchor.size() != nv ||
+        mb.body.rest.length.size() != ne || mb.body.rest.sin_half_angle.size() != ne)
+      throw InputError(where + "membrane '" + mb.name + "': inconsistent particle arrays");
+    membrane::ContactMemory::Saved springs, self_springs;
+    transfer_memory(load, springs);
+    transfer_memory(load, self_springs);
+    try {
+      mb.memory.restore(springs);
+      mb.self_memory.restore(self_springs);
+    } catch (const InputError& e) {
+      throw InputError(where + "membrane '" + mb.name + "': " + e.what());
+    }
+  }
   if (!r.at_end()) throw InputError(where + "trailing data in checkpoint");
 }
 

@@ -31,6 +31,7 @@ std::vector<std::string> series_columns(const DemSystem<D>& s) {
     c.push_back(m.name + "_kinetic_energy");
     for (int d = 0; d < 3; ++d) c.push_back(m.name + "_reaction_" + axes[d]);
     c.push_back(m.name + "_contacts");
+    if (m.self_contact) c.push_back(m.name + "_self_contacts");
   }
   return c;
 }
@@ -175,6 +176,7 @@ void DemOutputs<D>::on_series(const DemRun<D>& run) {
     row.push_back(membrane::kinetic_energy(m));
     for (int d = 0; d < 3; ++d) row.push_back(m.reaction[d]);
     row.push_back(m.contacts);
+    if (m.self_contact) row.push_back(m.self_contacts);
   }
   if (ke > peak_kinetic_energy) {
     peak_kinetic_energy = ke;

@@ -234,6 +234,9 @@ struct MembraneSpec {
   // (the triaxial plates); empty = the ring stays where it is.
   std::string bottom_ring_wall, top_ring_wall;
   std::string material;  // [[materials]] entry for grain-membrane contacts
+  // Contacts of the membrane's particles with its own triangles
+  // (dem/membrane/self_contact.hpp), with the material against itself.
+  bool self_contact = false;
 };
 
 // The triaxial test (spec/membranes-and-jamming.md, Götz 2024 §3.3.1): which

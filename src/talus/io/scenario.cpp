@@ -259,15 +259,6 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
 
   TomlReader output = table_or_empty(root, "output", empty);
   s.output = read_output(output);
-  if (!s.membranes.empty() && s.output.checkpoint_interval > 0.0)
-    output.fail(
-        "checkpoint_interval",
-        "checkpoints of runs with [[membranes]] are not implemented yet (leave it out or 0)");
-  const bool servo = std::any_of(s.walls.begin(), s.walls.end(),
-                                 [](const auto& w) { return w.motion.servo_pressure > 0; });
-  if (servo && s.output.checkpoint_interval > 0.0)
-    output.fail("checkpoint_interval",
-                "checkpoints of runs with servo walls are not implemented yet (leave it out or 0)");
   root.finish();
   return s;
 }

@@ -119,6 +119,7 @@ dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemConte
   read_ring_walls(r, m, ctx);
   m.material = r.required_string("material");
   check_material(r, "material", m.material, ctx);
+  m.self_contact = r.boolean("self_contact", false);
   r.finish();
   return m;
 }
@@ -163,6 +164,7 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
   if (!m.bottom_ring_wall.empty()) t["bottom_ring_wall"] = m.bottom_ring_wall;
   if (!m.top_ring_wall.empty()) t["top_ring_wall"] = m.top_ring_wall;
   t["material"] = m.material;
+  t["self_contact"] = m.self_contact;
   return t;
 }
 

@@ -18,6 +18,11 @@ struct MembraneBody {
   // everything the membrane holds.
   Vec3 reaction = Vec3::Zero();
   int contacts = 0;  // grain-membrane contacts in the last force pass
+  // Contacts of its particles with its own triangles (self_contact.hpp): off
+  // unless the scenario asks, since most membranes never fold onto themselves.
+  bool self_contact = false;
+  ContactMemory self_memory;  // their friction springs, keyed by membrane particle
+  int self_contacts = 0;      // in the last force pass
 };
 
 double kinetic_energy(const MembraneBody& m);

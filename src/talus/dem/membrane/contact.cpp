@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "talus/core/error.hpp"
+
 namespace talus::dem::membrane {
 
 TrianglePoint closest_on_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
@@ -165,6 +167,30 @@ std::span<ContactHistory<3>> ContactMemory::springs(int64_t grain,
   return out;
 }
 
+ContactMemory::Saved ContactMemory::saved() const {
+  Saved s;
+  for (const Lane& l : lanes_)
+    for (const Entry& e : l.current) {
+      s.grain.push_back(e.grain);
+      s.feature.push_back(e.feature);
+      s.point.push_back(e.point);
+      s.shear.push_back(e.history.shear);
+      s.roll.push_back(e.history.roll);
+    }
+  return s;
+}
+
+void ContactMemory::restore(const Saved& s) {
+  const std::size_t n = s.grain.size();
+  if (s.feature.size() != n || s.point.size() != n || s.shear.size() != n || s.roll.size() != n)
+    throw InputError("membrane contact springs: arrays of different lengths");
+  lanes_.assign(1, Lane{});
+  previous_.clear();
+  for (std::size_t k = 0; k < n; ++k)
+    lanes_[0].current.push_back(
+        {s.grain[k], s.feature[k], s.point[k], ContactHistory<3>{s.shear[k], s.roll[k]}, false});
+}
+
 void ContactMemory::store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h,
                           int lane) {
   lanes_[lane].current.push_back({grain, feature_key(c), c.point, h, false});
@@ -173,11 +199,12 @@ void ContactMemory::store(int64_t grain, const TriangleContact& c, const Contact
 namespace {
 
 // The contact forces of one grain; add_reaction(vertex, force) takes the
-// membrane's share.
-template <class AddReaction>
+// membrane's share, m_eff(contact) is the contact's effective mass.
+template <class AddReaction, class EffectiveMass>
 GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
-                          std::span<const Vec3> v_mem, AddReaction&& add_reaction, int64_t grain_id,
-                          const Grain& g, std::span<const TriangleContact> contacts,
+                          std::span<const Vec3> v_mem, AddReaction&& add_reaction,
+                          EffectiveMass&& m_eff, int64_t grain_id, const Grain& g,
+                          std::span<const TriangleContact> contacts,
                           const ViscoelasticHertz::Coeffs& coeffs, double dt, ContactMemory& memory,
                           int lane) {
   GrainForce out;
@@ -195,7 +222,7 @@ GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
     kin.overlap = g.radius - c.distance;
     const double arm = g.radius - 0.5 * kin.overlap;
     kin.r_eff = g.radius;
-    kin.m_eff = g.mass;
+    kin.m_eff = m_eff(c);
     kin.inertia_eff = 0;
     const Vec3 v_membrane =
         c.w[0] * v_mem[tri[0]] + c.w[1] * v_mem[tri[1]] + c.w[2] * v_mem[tri[2]];
@@ -224,8 +251,8 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  const ViscoelasticHertz::Coeffs& coeffs, double dt,
                                  ContactMemory& memory) {
   return contact_forces(
-      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { f_mem[v] += f; }, grain_id, g, contacts,
-      coeffs, dt, memory, 0);
+      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { f_mem[v] += f; },
+      [&](const TriangleContact&) { return g.mass; }, grain_id, g, contacts, coeffs, dt, memory, 0);
 }
 
 GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
@@ -235,8 +262,29 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  const ViscoelasticHertz::Coeffs& coeffs, double dt,
                                  ContactMemory& memory, int lane) {
   return contact_forces(
-      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { reactions.emplace_back(v, f); }, grain_id, g,
-      contacts, coeffs, dt, memory, lane);
+      mesh, x_mem, v_mem, [&](int v, const Vec3& f) { reactions.emplace_back(v, f); },
+      [&](const TriangleContact&) { return g.mass; }, grain_id, g, contacts, coeffs, dt, memory,
+      lane);
+}
+
+int particle_triangle_forces(const Mesh& mesh, std::span<const Vec3> x, std::span<const Vec3> v,
+                             std::span<const double> mass, std::span<Vec3> f, int particle,
+                             double radius, std::span<const TriangleContact> contacts,
+                             const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                             ContactMemory& memory) {
+  const Grain g{x[particle], v[particle], Vec3::Zero(), radius, mass[particle]};
+  auto m_eff = [&](const TriangleContact& c) {
+    const auto& tri = mesh.triangles[c.triangle];
+    double inv = 0.0;
+    for (int k = 0; k < 3; ++k) inv += c.w[k] * c.w[k] / mass[tri[k]];
+    const double m_point = 1.0 / inv;
+    return mass[particle] * m_point / (mass[particle] + m_point);
+  };
+  const GrainForce gf = contact_forces(
+      mesh, x, v, [&](int k, const Vec3& r) { f[k] += r; }, m_eff, particle, g, contacts, coeffs,
+      dt, memory, 0);
+  f[particle] += gf.force;
+  return gf.contacts;
 }
 
 Eigen::Vector3i TriangleGrid::cell_of(const Vec3& p) const {

@@ -86,6 +86,19 @@ class ContactMemory {
   void store(int64_t grain, const TriangleContact& c, const ContactHistory<3>& h, int lane = 0);
   std::size_t size() const;
 
+  // The springs stored since the last begin_step, for checkpoints: the lanes
+  // joined in lane order, which is all the next begin_step reads.
+  struct Saved {
+    std::vector<int64_t> grain;
+    std::vector<uint64_t> feature;
+    std::vector<Vec3> point, shear, roll;
+  };
+  Saved saved() const;
+  // Puts saved springs back as this step's, all in lane 0: the next
+  // begin_step joins them in the same order as the lanes they came from.
+  // Throws InputError when the arrays differ in length.
+  void restore(const Saved& s);
+
  private:
   struct Entry {
     int64_t grain;
@@ -133,6 +146,19 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  const Grain& g, std::span<const TriangleContact> contacts,
                                  const ViscoelasticHertz::Coeffs& coeffs, double dt,
                                  ContactMemory& memory, int lane);
+
+// A particle of the membrane itself (self_contact.hpp) against the selected
+// triangles: the same law, with the particle as a sphere of `radius` that does
+// not rotate, and m_eff the reduced mass of the particle and the contact point
+// (mass 1 / sum_k w_k^2 / m_k: the acceleration of the point under a force F
+// there is F sum_k w_k^2 / m_k). The force goes to f[particle], the reactions
+// -w_k F to the corners; springs in lane 0 of `memory`, keyed by particle.
+// Returns the number of contacts.
+int particle_triangle_forces(const Mesh& mesh, std::span<const Vec3> x, std::span<const Vec3> v,
+                             std::span<const double> mass, std::span<Vec3> f, int particle,
+                             double radius, std::span<const TriangleContact> contacts,
+                             const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                             ContactMemory& memory);
 
 // Candidate triangles near spheres: a uniform grid of triangle bounding boxes,
 // rebuilt whenever the membrane has moved (cheap: one pass over the triangles).

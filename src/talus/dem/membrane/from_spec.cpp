@@ -70,6 +70,7 @@ MembraneBody make_membrane_body(const MembraneSpec& s, int material) {
   MembraneBody b;
   b.name = s.name;
   b.material = material;
+  b.self_contact = s.self_contact;
   b.body = make_membrane(generate(s), mp);
   auto& m = b.body;
   switch (s.fixed) {

@@ -14,6 +14,13 @@ MembraneStep::MembraneStep(const DemSystem<3>& s) {
       coeffs_.push_back(ViscoelasticHertz::make(s.contact, grain, wall,
                                                 pair_coefficients(s.contact, grain, wall)));
     }
+  for (const auto& m : s.membranes) {
+    const auto& wall = mats[m.material];
+    self_coeffs_.push_back(
+        ViscoelasticHertz::make(s.contact, wall, wall, pair_coefficients(s.contact, wall, wall)));
+    self_exclusion_.push_back(m.self_contact ? self_contact_exclusion(m.body.mesh)
+                                             : SelfExclusion{});
+  }
   grids_.resize(s.membranes.size());
   edge_forces_.resize(s.membranes.size());
 }
@@ -90,8 +97,18 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     lo.array() -= r_max;
     hi.array() += r_max;
     // Rebuilt every step: one pass over the triangles, cheaper than the
-    // internal forces, and never stale.
-    grids_[k].build(m.mesh, m.x, 2.0 * r_max);
+    // internal forces, and never stale. Self-contact queries the same grid
+    // with the radius d: the cell must suit that too when there are no
+    // grains (r_max = 0 would make it tiny).
+    const double self_radius = self_contact_radius(m);
+    grids_[k].build(m.mesh, m.x,
+                    mb.self_contact ? std::max(2.0 * r_max, 2.0 * self_radius) : 2.0 * r_max);
+    if (mb.self_contact) {
+      mb.self_memory.begin_step(1);
+      mb.self_contacts =
+          add_self_contact_forces(m, grids_[k], self_exclusion_[k], self_radius, self_coeffs_[k],
+                                  s.dt, mb.self_memory, self_scratch_);
+    }
     // Tasks for the team's other threads (they wait at the end of the
     // caller's omp single); outside a parallel region the loop runs here.
 #pragma omp taskloop num_tasks(kLanes) default(shared)
@@ -132,6 +149,11 @@ double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const do
       best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(static_cast<int>(a), k),
                                                                   me, r_min[a], v_ref));
     }
+    // Two particles of mass mv: the least reduced mass a self-contact can
+    // have (the contact point's mass is at least mv).
+    if (s.membranes[k].self_contact)
+      best = std::min(best, ViscoelasticHertz::critical_time_step(self_coeffs_[k], 0.5 * mv,
+                                                                  self_contact_radius(m), v_ref));
   }
   return best;
 }

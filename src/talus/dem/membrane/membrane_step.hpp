@@ -15,6 +15,7 @@
 
 #include "talus/dem/contact/hertz_mindlin.hpp"
 #include "talus/dem/membrane/body.hpp"
+#include "talus/dem/membrane/self_contact.hpp"
 #include "talus/dem/system.hpp"
 
 namespace talus::dem::membrane {
@@ -48,8 +49,10 @@ class MembraneStep {
   // membrane::critical_time_step. Contact: min over membranes and grain
   // materials a of the single Hertz contact at v_ref of the lightest grain of
   // a (mass m_min[a], radius r_min[a], the stepper's per-material minima, 1e300
-  // for none) with the lightest free membrane particle; the stepper divides it
-  // by the same packing factor as the grains' contacts.
+  // for none) with the lightest free membrane particle, and for a membrane
+  // with self-contact that of two of its lightest free particles (radius
+  // self_contact_radius); the stepper divides it by the same packing factor
+  // as the grains' contacts.
   double internal_time_step(const DemSystem<3>& s) const;
   double contact_time_step(const DemSystem<3>& s, std::span<const double> m_min,
                            std::span<const double> r_min, double v_ref) const;
@@ -76,6 +79,11 @@ class MembraneStep {
   };
 
   std::vector<ViscoelasticHertz::Coeffs> coeffs_;
+  // Self-contact (membranes with self_contact only): the membrane's material
+  // against itself, the triangles each particle skips, buffers.
+  std::vector<ViscoelasticHertz::Coeffs> self_coeffs_;
+  std::vector<SelfExclusion> self_exclusion_;
+  SelfContactScratch self_scratch_;
   std::vector<TriangleGrid> grids_;
   std::vector<EdgeForces> edge_forces_;
   std::vector<Vec3> force_, torque_;
