@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""The clay blocks of van den Bout §3 (scenarios/mpm_clay_block*.toml) on a coarse grid
+(4 cm cells instead of 2 cm; about 2000 points each), run by the real binary and read by
+plots/plot_clay_block.py.
+
+What is asserted, and why:
+- the crack indicator is physical: every point with c/c0 < 1 has yielded (plastic strain
+  > 0), since cohesion is lost only on the yield surface (mpm.md "Cohesion loss");
+- the weaker clay (18.3 kPa, 27 deg) loses more of its bonds than the stronger (26.7 kPa,
+  28 deg) in the same impact: its fraction of damaged points (c/c0 < 0.5) is larger.
+  (The direction is the source's; on this grid it was seen before this test was written:
+  0.50 against 0.36, docs/validation.md "Clay block".)
+- both blocks come to rest against the obstacle and the run-out: the kinetic energy at the
+  end is below 1 % of the start's (72 J at 2 m/s).
+The source's finer claim (a crack from the obstacle corner over half the weak block's length,
+only local damage in the strong one) is NOT asserted: see docs/validation.md.
+
+Args: <talus binary> <source dir>. Run with Debian's /usr/bin/python3 (python3-vtk9).
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+talus, src = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(src, "plots"))
+from plot_mpm import read_points, snapshots  # noqa: E402
+
+failures = []
+
+
+def check(name, ok):
+    if not ok:
+        failures.append(name)
+        print("FAIL:", name)
+
+
+def run(tmp, name):
+    out = os.path.join(tmp, name)
+    subprocess.run([talus, "run", os.path.join(src, "scenarios", name + ".toml"), "--out", out,
+                    "--quiet", "--threads", "1", "--set", "grid.cell_size=0.04",
+                    "--set", "output.snapshot_interval=0.3"], check=True)
+    subprocess.run(["/usr/bin/python3", os.path.join(src, "plots", "plot_clay_block.py"), out],
+                   check=True, stdout=subprocess.DEVNULL)
+    return out
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    damaged = {}
+    for name in ("mpm_clay_block", "mpm_clay_block_strong"):
+        out = run(tmp, name)
+        cracks = json.load(open(os.path.join(out, "cracks.json")))
+        damaged[name] = cracks["damaged_fraction"]
+        print(name, json.dumps(cracks))
+        _, d = read_points(snapshots(out)[-1][1], ("c_over_c0", "plastic_strain"))
+        lost = d["c_over_c0"] < 1.0
+        check(f"{name}: some cohesion is lost", lost.any())
+        check(f"{name}: every point that lost cohesion has yielded",
+              bool((d["plastic_strain"][lost] > 0.0).all()))
+        rows = list(csv.DictReader(open(os.path.join(out, "series.csv"))))
+        ke0, ke1 = float(rows[0]["kinetic_energy"]), float(rows[-1]["kinetic_energy"])
+        print(f"{name}: kinetic energy {ke0:.3g} J -> {ke1:.3g} J")
+        check(f"{name}: at rest at the end (KE < 1 % of the start)", ke1 < 0.01 * ke0)
+        check(f"{name}: a png of the cracks", os.path.getsize(os.path.join(out, "plots",
+                                                                           "cracks.png")) > 0)
+    check("the weak clay is more damaged than the strong",
+          damaged["mpm_clay_block"] > damaged["mpm_clay_block_strong"])
+
+if failures:
+    sys.exit(f"{len(failures)} checks failed")
+print("all checks passed")
