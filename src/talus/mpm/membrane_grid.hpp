@@ -8,10 +8,24 @@
 //    anchor node is simply left off the grid: its cables pull its neighbours);
 //  - from the grid: velocities (the solver's FLIP/PIC blend), positions, and
 //    York's velocity gradient, from which its strain follows.
+// A York point's domain is its piece of the line, the segment of current
+// length l = l0 lambda along its tangent (YorkStencil), not the square of a
+// GIMP particle: the weights are the mean of the shape function's values at
+// the segment's ends and the tangential gradient their difference,
+// (N_i(end) - N_i(start)) / l, as in CPDI (Sadeghirad et al. 2011), whose
+// domains are tracked by their corners. Why (docs/validation.md "Membranes in
+// MPM", measured): with the square domains, a line at an angle to the grid is
+// integrated inconsistently (the squares do not tile it), so a uniformly
+// stretched line puts spurious forces on the nodes and the strain it takes
+// from the grid does not add up to the line's elongation; the line's points
+// drifted apart without their strain seeing it and the line separated under
+// load. With the segments, the strain rate of a point is exactly the relative
+// velocity of its ends, and a uniform tension telescopes to the line's ends.
 // Membranes are few points: these loops are serial.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "talus/core/error.hpp"
@@ -34,6 +48,37 @@ template <int D>
 bool on_grid(const Membrane<D>& m, std::size_t i) {
   return m.model == MembraneModel::York || !m.fixed[i];
 }
+
+// Weights and tangential gradients of a York point whose domain is the
+// segment x -+ (l / 2) t: w_i = (N_i(a) + N_i(b)) / 2 and t . grad N_i =
+// (N_i(b) - N_i(a)) / l, at the ends a, b (the two stencils side by side; a
+// node may appear twice). The ends take the plain shape function (GIMP's hat:
+// half width 0), the segment being the particle's domain.
+template <int D, class Shape>
+struct YorkStencil {
+  using Vec = typename Space<D>::Vec;
+  static constexpr int count = 2 * Stencil<D, Shape>::count;
+  std::array<std::int64_t, count> node;
+  std::array<double, count> w;
+  std::array<double, count> g;  // t . grad N_i, 1/m
+
+  bool compute(const Grid<D>& grid, const Membrane<D>& m, std::size_t i) {
+    const double l = m.rest_length[i] * m.stretch[i];
+    const Vec half = 0.5 * l * m.tangent[i];
+    Stencil<D, Shape> st;
+    for (int e = 0; e < 2; ++e) {
+      if (!st.compute(grid, e == 0 ? (m.x[i] - half).eval() : (m.x[i] + half).eval(), 0.0))
+        return false;
+      const double sign = e == 0 ? -1.0 : 1.0;
+      for (int k = 0; k < st.count; ++k) {
+        node[e * st.count + k] = st.node[k];
+        w[e * st.count + k] = 0.5 * st.w[k];
+        g[e * st.count + k] = l > 0.0 ? sign * st.w[k] / l : 0.0;
+      }
+    }
+    return true;
+  }
+};
 
 }  // namespace membrane_detail
 
@@ -66,6 +111,7 @@ void membranes_to_grid(std::vector<Membrane<D>>& ms, Grid<D>& grid,
                        double time) {
   using Vec = typename Space<D>::Vec;
   Stencil<D, Shape> st;
+  membrane_detail::YorkStencil<D, Shape> ys;
   std::vector<Vec> cable;
   for (auto& m : ms) {
     const bool fe = m.model == MembraneModel::FiniteElement;
@@ -75,19 +121,27 @@ void membranes_to_grid(std::vector<Membrane<D>>& ms, Grid<D>& grid,
     }
     for (std::size_t i = 0; i < m.size(); ++i) {
       if (!membrane_detail::on_grid(m, i)) continue;
-      if (!st.compute(grid, m.x[i], half_width)) membrane_detail::left_grid(time, m.name, i);
       const Vec mv = m.mass[i] * m.v[i];
       Vec f = m.mass[i] * gravity;
-      if (forces && fe) f += cable[i];
+      if (fe) {
+        if (!st.compute(grid, m.x[i], half_width)) membrane_detail::left_grid(time, m.name, i);
+        if (forces) f += cable[i];
+        for (int k = 0; k < st.count; ++k) {
+          const auto a = st.node[k];
+          grid.mass[a] += st.w[k] * m.mass[i];
+          grid.momentum[a] += st.w[k] * mv;
+          if (forces) grid.force[a] += st.w[k] * f;
+        }
+        continue;
+      }
+      if (!ys.compute(grid, m, i)) membrane_detail::left_grid(time, m.name, i);
       // York: V sigma = l0 lambda T t (x) t, with T = J max(eps, 0).
-      const double vs = !fe && forces ? m.rest_length[i] * m.stretch[i] * m.tension(i) : 0.0;
-      for (int k = 0; k < st.count; ++k) {
-        const auto a = st.node[k];
-        grid.mass[a] += st.w[k] * m.mass[i];
-        grid.momentum[a] += st.w[k] * mv;
-        if (!forces) continue;
-        grid.force[a] += st.w[k] * f;
-        if (!fe) grid.force[a] -= vs * m.tangent[i].dot(st.grad[k]) * m.tangent[i];
+      const double vs = forces ? m.rest_length[i] * m.stretch[i] * m.tension(i) : 0.0;
+      for (int k = 0; k < ys.count; ++k) {
+        const auto a = ys.node[k];
+        grid.mass[a] += ys.w[k] * m.mass[i];
+        grid.momentum[a] += ys.w[k] * mv;
+        if (forces) grid.force[a] += ys.w[k] * f - (vs * ys.g[k]) * m.tangent[i];
       }
     }
   }
@@ -98,12 +152,18 @@ template <int D, class Shape>
 void clamp_membrane_nodes(const std::vector<Membrane<D>>& ms, const Grid<D>& grid,
                           std::vector<typename Space<D>::Vec>& field, double half_width) {
   Stencil<D, Shape> st;
+  membrane_detail::YorkStencil<D, Shape> ys;
   for (const auto& m : ms) {
     if (m.model != MembraneModel::York) continue;
     for (std::size_t i = 0; i < m.size(); ++i) {
-      if (!m.fixed[i] || !st.compute(grid, m.x[i], half_width)) continue;
-      for (int k = 0; k < st.count; ++k)
-        if (st.w[k] > 0.0) field[st.node[k]].setZero();
+      if (!m.fixed[i]) continue;
+      // The nodes around the point, and those its segment reaches.
+      if (st.compute(grid, m.x[i], half_width))
+        for (int k = 0; k < st.count; ++k)
+          if (st.w[k] > 0.0) field[st.node[k]].setZero();
+      if (ys.compute(grid, m, i))
+        for (int k = 0; k < ys.count; ++k)
+          if (ys.w[k] > 0.0) field[ys.node[k]].setZero();
     }
   }
 }
@@ -116,17 +176,27 @@ void membranes_velocities(std::vector<Membrane<D>>& ms, const Grid<D>& grid, dou
                           double half_width) {
   using Vec = typename Space<D>::Vec;
   Stencil<D, Shape> st;
+  membrane_detail::YorkStencil<D, Shape> ys;
   for (auto& m : ms) {
+    const bool york = m.model == MembraneModel::York;
     for (std::size_t i = 0; i < m.size(); ++i) {
       if (m.fixed[i]) {
         m.v[i].setZero();
         continue;
       }
-      st.compute(grid, m.x[i], half_width);  // checked in membranes_to_grid
       Vec dv = Vec::Zero(), v_pic = Vec::Zero();
-      for (int k = 0; k < st.count; ++k) {
-        dv += st.w[k] * (grid.velocity[st.node[k]] - grid.velocity_old[st.node[k]]);
-        v_pic += st.w[k] * grid.velocity[st.node[k]];
+      auto add = [&](const auto& s) {  // checked in membranes_to_grid
+        for (int k = 0; k < s.count; ++k) {
+          dv += s.w[k] * (grid.velocity[s.node[k]] - grid.velocity_old[s.node[k]]);
+          v_pic += s.w[k] * grid.velocity[s.node[k]];
+        }
+      };
+      if (york) {
+        ys.compute(grid, m, i);
+        add(ys);
+      } else {
+        st.compute(grid, m.x[i], half_width);
+        add(st);
       }
       m.v[i] = flip * (m.v[i] + dv) + (1.0 - flip) * v_pic;
     }
@@ -134,33 +204,38 @@ void membranes_velocities(std::vector<Membrane<D>>& ms, const Grid<D>& grid, dou
 }
 
 // Moves the free points with grid.velocity; York's tangents and stretches
-// follow the gradient of that same field, so that a point's line element
-// stretches exactly as the field carries its neighbours, with USL and MUSL
-// alike. (MUSL's re-mapped field carries the FLIP noise of the points'
-// velocities; with it, the York line of tests/mpm/test_mpm_membrane_dynamics
-// rang and separated within 0.45 s at flip 0.99, measured.) Known limit,
-// measured (docs/validation.md "Membranes in MPM"): a York line at an angle to
-// the grid separates under load, since -V sigma grad N_i gives nodes that a
-// point barely reaches (N_i -> 0) forces out of proportion to their mass; the
-// FE cables map nodal forces with N_i and do not have this problem.
+// follow the gradient of that same field along the point's segment, so that a
+// point's line element stretches exactly as the field carries its ends, with
+// USL and MUSL alike. (MUSL's re-mapped field carries the FLIP noise of the
+// points' velocities; with it, the York line of
+// tests/mpm/test_mpm_membrane_dynamics rang and separated within 0.45 s at
+// flip 0.99, measured.)
 template <int D, class Shape>
 void membranes_move(std::vector<Membrane<D>>& ms, const Grid<D>& grid, double dt,
                     double half_width) {
   using Vec = typename Space<D>::Vec;
-  using Mat = typename Membrane<D>::Mat;
   Stencil<D, Shape> st;
+  membrane_detail::YorkStencil<D, Shape> ys;
   for (auto& m : ms) {
     const bool york = m.model == MembraneModel::York;
     for (std::size_t i = 0; i < m.size(); ++i) {
       if (m.fixed[i] && !york) continue;
-      st.compute(grid, m.x[i], half_width);
       Vec v_move = Vec::Zero();
-      Mat grad = Mat::Zero();
-      for (int k = 0; k < st.count; ++k) {
-        v_move += st.w[k] * grid.velocity[st.node[k]];
-        if (york) grad += grid.velocity[st.node[k]] * st.grad[k].transpose();
+      if (!york) {
+        st.compute(grid, m.x[i], half_width);
+        for (int k = 0; k < st.count; ++k) v_move += st.w[k] * grid.velocity[st.node[k]];
+        m.x[i] += dt * v_move;
+        continue;
       }
-      if (york) m.velocity_gradient[i] = grad;
+      // York: L t = (v(b) - v(a)) / l, all a material line element along t
+      // needs; stored as the rank-one L t (x) t, which maps t to it.
+      ys.compute(grid, m, i);
+      Vec lt = Vec::Zero();
+      for (int k = 0; k < ys.count; ++k) {
+        v_move += ys.w[k] * grid.velocity[ys.node[k]];
+        lt += ys.g[k] * grid.velocity[ys.node[k]];
+      }
+      m.velocity_gradient[i] = lt * m.tangent[i].transpose();
       if (!m.fixed[i]) m.x[i] += dt * v_move;
     }
     if (york) m.update_york_strain(dt);
