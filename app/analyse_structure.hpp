@@ -36,6 +36,11 @@ struct D2minCommandOptions : StructureOptions {
   double cutoff = std::numeric_limits<double>::quiet_NaN();
   double gap = 0.0;      // contact definition for min_contacts
   int min_contacts = 0;  // leave out grains with fewer contacts at the reference time
+  // Spatial autocorrelation C(r) of D_min (Götz eq. 48-49) in bins of this width, m; NaN: not
+  // computed.
+  double correlation = std::numeric_limits<double>::quiet_NaN();
+  // Its largest distance, m; NaN: 5 mean diameters (the default range of rdf).
+  double correlation_rmax = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct PackingOptions : StructureOptions {
@@ -48,7 +53,8 @@ int contacts_command(const ContactsOptions& options);
 // rdf.csv (r, g, coordination) and rdf.json.
 int rdf_command(const RdfCommandOptions& options);
 // d2min.csv (per grain), d2min.pvd + d2min_000000.vtu (grains at the later time with the
-// values as point data) and d2min.json (means).
+// values as point data) and d2min.json (means); with a correlation bin width also
+// d2min_correlation.csv (r, C, C_over_C0, grains, pairs).
 int d2min_command(const D2minCommandOptions& options);
 // packing.csv (per grain) and packing.json (means).
 int packing_command(const PackingOptions& options);

@@ -119,6 +119,13 @@ int main(int argc, char** argv) {
   d2_cmd->add_option("--min-contacts", dc.min_contacts,
                      "leave out grains with fewer contacts at --from (default 0; Goetz: 3)");
   d2_cmd->add_option("--gap", dc.gap, "contact gap for --min-contacts, m (default 0)");
+  auto* corr_opt = d2_cmd->add_option(
+      "--correlation", dc.correlation,
+      "also the spatial autocorrelation C(r) of D_min in bins of this width, m (Goetz eq. 48)");
+  d2_cmd
+      ->add_option("--correlation-rmax", dc.correlation_rmax,
+                   "largest distance of C(r), m (default: 5 mean diameters)")
+      ->needs(corr_opt);
   PackingOptions pc;
   auto* pk_cmd = structure(
       "packing", "local packing fraction of every grain from its radical Voronoi cell", pc);

@@ -20,3 +20,36 @@ finish() {  # name of the script's part
   echo "$1: $pass passed, $fail failed"
   [ $fail -eq 0 ]
 }
+# A tiny DEM scenario of listed grains, for the analyse tests: 10 ms, snapshots
+# every 2.5 ms (five), one soft "grain" material (Hertz, E = 1e8 Pa). The grains
+# come on stdin, one "{ position = ..., radius = ... }," entry a line.
+dem_list_scenario() {  # name, dimension, gravity (a TOML array)
+  cat <<TOML
+method = "dem"
+name = "$1"
+[run]
+dimension = $2
+duration = 0.01
+gravity = $3
+[contact]
+model = "viscoelastic_hertz"
+[[materials]]
+name = "grain"
+density = 2000
+youngs_modulus = 1e8
+poisson_ratio = 0.245
+friction = 0.5
+dissipation = 7e-9
+[[particles]]
+type = "list"
+material = "grain"
+list = [
+TOML
+  cat
+  printf ']\n[output]\nsnapshot_interval = 0.0025\n'
+}
+# Runs a scenario into a folder, quietly, as one check on its exit status.
+run_check() {  # name of the check, scenario file, output folder
+  "$talus" run "$2" --out "$3" --quiet > "$tmp/py" 2>&1
+  rc=$?; check_rc "$1"
+}

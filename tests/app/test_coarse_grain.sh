@@ -3,26 +3,7 @@
 # velocity in every cell with mass; the cells share out the grains' volume; bad input exits 2.
 # Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
-cat > "$tmp/drift.toml" <<'TOML'
-method = "dem"
-name = "drift"
-[run]
-dimension = 3
-duration = 0.01
-gravity = [0, 0, 0]
-[contact]
-model = "viscoelastic_hertz"
-[[materials]]
-name = "grain"
-density = 2000
-youngs_modulus = 1e8
-poisson_ratio = 0.245
-friction = 0.5
-dissipation = 7e-9
-[[particles]]
-type = "list"
-material = "grain"
-list = [
+dem_list_scenario drift 3 "[0, 0, 0]" > "$tmp/drift.toml" <<'LIST'
   { position = [0.001, 0.001, 0.001], radius = 7e-4, velocity = [0.02, -0.01, 0.1] },
   { position = [0.003, 0.001, 0.001], radius = 6e-4, velocity = [0.02, -0.01, 0.1] },
   { position = [0.001, 0.003, 0.001], radius = 7e-4, velocity = [0.02, -0.01, 0.1] },
@@ -31,12 +12,8 @@ list = [
   { position = [0.003, 0.001, 0.003], radius = 7e-4, velocity = [0.02, -0.01, 0.1] },
   { position = [0.001, 0.003, 0.003], radius = 6e-4, velocity = [0.02, -0.01, 0.1] },
   { position = [0.003, 0.003, 0.003], radius = 7e-4, velocity = [0.02, -0.01, 0.1] },
-]
-[output]
-snapshot_interval = 0.0025
-TOML
-"$talus" run "$tmp/drift.toml" --out "$tmp/drift" --quiet > "$tmp/py" 2>&1
-rc=$?; check_rc "tiny drift run"
+LIST
+run_check "tiny drift run" "$tmp/drift.toml" "$tmp/drift"
 "$talus" analyse coarse-grain "$tmp/drift" --cells 2,2,3 --period 0.005 --quiet > "$tmp/py" 2>&1
 rc=$?; check_rc "coarse-grain exit status"
 for f in field.csv field.vti rz.csv coarse_grain.json; do

@@ -4,7 +4,8 @@
 # homogeneously at strain rate 1/s, with one interior grain given an extra 0.01 m/s; and a 2D
 # square lattice of disks at rest. Known values: contacts within a 0.21 mm gap = the lattice's,
 # g(r) shell of 6 at a, Voronoi phi = grain / a^3, D2min zero away from the odd grain and
-# 18 delta^2 at it. Bad input exits 2 and writes nothing. Args: <talus binary> <source dir>.
+# 18 delta^2 at it; its autocorrelation C(r) equal to an O(N^2) recomputation from d2min.csv.
+# Bad input exits 2 and writes nothing. Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
 /usr/bin/python3 - "$tmp" <<'PY'
 import sys
@@ -19,36 +20,13 @@ for i in range(4):
                 v[0] += 0.01  # the non-affine grain
             rows.append(f"  {{ position = {x}, radius = {r}, velocity = {v} }},")
 disks = [f"  {{ position = [{a * i}, {a * j}], radius = {r} }}," for i in range(4) for j in range(4)]
-head = """method = "dem"
-name = "{name}"
-[run]
-dimension = {dim}
-duration = 0.01
-gravity = {g}
-[contact]
-model = "viscoelastic_hertz"
-[[materials]]
-name = "grain"
-density = 2000
-youngs_modulus = 1e8
-poisson_ratio = 0.245
-friction = 0.5
-dissipation = 7e-9
-[[particles]]
-type = "list"
-material = "grain"
-list = [
-"""
-tail = "]\n[output]\nsnapshot_interval = 0.0025\n"
-open(f"{sys.argv[1]}/lattice.toml", "w").write(
-    head.format(name="lattice", dim=3, g="[0, 0, 0]") + "\n".join(rows) + "\n" + tail)
-open(f"{sys.argv[1]}/disks.toml", "w").write(
-    head.format(name="disks", dim=2, g="[0, 0]") + "\n".join(disks) + "\n" + tail)
+open(f"{sys.argv[1]}/lattice.list", "w").write("\n".join(rows) + "\n")
+open(f"{sys.argv[1]}/disks.list", "w").write("\n".join(disks) + "\n")
 PY
-"$talus" run "$tmp/lattice.toml" --out "$tmp/lattice" --quiet > "$tmp/py" 2>&1
-rc=$?; check_rc "tiny 3D lattice run"
-"$talus" run "$tmp/disks.toml" --out "$tmp/disks" --quiet > "$tmp/py" 2>&1
-rc=$?; check_rc "tiny 2D lattice run"
+dem_list_scenario lattice 3 "[0, 0, 0]" < "$tmp/lattice.list" > "$tmp/lattice.toml"
+dem_list_scenario disks 2 "[0, 0]" < "$tmp/disks.list" > "$tmp/disks.toml"
+run_check "tiny 3D lattice run" "$tmp/lattice.toml" "$tmp/lattice"
+run_check "tiny 2D lattice run" "$tmp/disks.toml" "$tmp/disks"
 run=$tmp/lattice
 "$talus" analyse contacts "$run" --gap 2.1e-4 --min-contacts 3 --quiet > "$tmp/py" 2>&1
 rc=$?; check_rc "contacts exit status"
@@ -58,6 +36,9 @@ rc=$?; check_rc "rdf exit status"
 rc=$?; check_rc "d2min exit status"
 "$talus" analyse packing "$run" --time 0 --quiet > "$tmp/py" 2>&1
 rc=$?; check_rc "packing exit status"
+"$talus" analyse d2min "$run" --cutoff 3.3e-3 --correlation 1e-3 --correlation-rmax 8e-3 \
+  --out "$tmp/corr" --quiet > "$tmp/py" 2>&1
+rc=$?; check_rc "d2min --correlation exit status"
 "$talus" analyse packing "$tmp/disks" --quiet > "$tmp/py" 2>&1
 rc=$?; check_rc "2D packing exit status"
 "$talus" analyse contacts "$tmp/disks" --gap 2.1e-4 --quiet > "$tmp/py" 2>&1
@@ -126,6 +107,48 @@ for row in csv.DictReader(open(f"{d2}/contacts.csv")):
     assert float(row["z"]) == 3, row
 PY
 rc=$?; check_rc "analytic values recovered"
+# C(r) of D_min (Götz eq. 48-49) recomputed here from d2min.csv by the O(N^2) double loop over
+# the 64 grains, with D_min = d_min_norm * d_mean: the command's bins [k w, (k+1) w), C(0) =
+# mean D_min^2 / d, means over the grains with a partner in the bin, pairs counted once. Also
+# the same d2min.csv as without --correlation. Round-off only: 1e-9 relative.
+/usr/bin/python3 - "$tmp/corr" "$run/analysis" > "$tmp/py" 2>&1 <<'PY'
+import csv, json, math, sys
+d, ref = sys.argv[1], sys.argv[2]
+assert open(f"{d}/d2min.csv").read() == open(f"{ref}/d2min.csv").read()
+meta = json.load(open(f"{d}/d2min.json"))
+dm = meta["mean_diameter"]
+g = [(float(x["x"]), float(x["y"]), float(x["z"]), float(x["d_min_norm"]) * dm)
+     for x in csv.DictReader(open(f"{d}/d2min.csv"))]
+g = [p for p in g if not math.isnan(p[3])]
+w, bins = 1e-3, 8
+c0 = sum(p[3] ** 2 for p in g) / len(g) / dm
+sums, grains, pairs = [0.0] * bins, [0] * bins, [0] * bins
+for i, p in enumerate(g):
+    s, m = [0.0] * bins, [0] * bins
+    for j, q in enumerate(g):
+        r = math.dist(p[:3], q[:3])
+        if j != i and r < bins * w:
+            b = min(int(r / w), bins - 1)
+            s[b] += q[3]; m[b] += 1; pairs[b] += j > i
+    for b in range(bins):
+        if m[b]:
+            sums[b] += p[3] * s[b] / m[b] / dm; grains[b] += 1
+rows = list(csv.DictReader(open(f"{d}/d2min_correlation.csv")))
+assert len(rows) == bins + 1, len(rows)
+assert float(rows[0]["r"]) == 0 and abs(float(rows[0]["C"]) - c0) < 1e-9 * c0, (rows[0], c0)
+assert meta["correlation"]["bin_width"] == w and abs(meta["correlation"]["r_max"] - 8e-3) < 1e-15
+assert sum(pairs) > 0 and sum(pairs) < 64 * 63 // 2
+for b, row in enumerate(rows[1:]):
+    assert abs(float(row["r"]) - (b + 0.5) * w) < 1e-15, row
+    assert int(float(row["grains"])) == grains[b] and int(float(row["pairs"])) == pairs[b], (b, row)
+    if grains[b]:
+        c = sums[b] / grains[b]
+        assert abs(float(row["C"]) - c) < 1e-9 * c0, (b, row, c)
+        assert abs(float(row["C_over_C0"]) - c / c0) < 1e-9, (b, row)
+    else:
+        assert row["C"] == "nan", row
+PY
+rc=$?; check_rc "C(r) of D_min recomputed from d2min.csv"
 # ParaView reads the D2min file as a particle snapshot with the values as point data.
 /usr/bin/python3 - "$run/analysis/d2min_000000.vtu" > "$tmp/py" 2>&1 <<'PY'
 import sys
@@ -153,6 +176,8 @@ bad "zero bins" "--bins" "$talus" analyse rdf "$run" --bins 0
 bad "time after the run" "no snapshot near" "$talus" analyse rdf "$run" --time 5
 bad "d2min backwards" "must come after" "$talus" analyse d2min "$run" --from 0.01 --to 0
 bad "negative cutoff" "--cutoff" "$talus" analyse d2min "$run" --cutoff -1
+bad "zero correlation bin" "--correlation" "$talus" analyse d2min "$run" --correlation 0
+bad "correlation rmax alone" "--correlation" "$talus" analyse d2min "$run" --correlation-rmax 1e-3
 bad "negative margin" "--margin" "$talus" analyse packing "$run" --margin -1
 bad "empty interval" "no snapshot in that interval" "$talus" analyse contacts "$run" --from 1 --to 2
 finish structure

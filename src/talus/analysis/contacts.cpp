@@ -27,13 +27,20 @@ std::vector<std::pair<std::size_t, std::size_t>> touching_pairs(const std::vecto
   return pairs;
 }
 
+// Contacts of each of n grains from the pairs in contact: shared by contact_counts and
+// contact_number, which needs the pairs as well and so must not search for them twice.
+std::vector<int> counts_of(const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                           std::size_t n) {
+  std::vector<int> count(n, 0);
+  for (const auto& [i, j] : pairs) ++count[i], ++count[j];
+  return count;
+}
+
 }  // namespace
 
 std::vector<int> contact_counts(const std::vector<Vec3>& position,
                                 const std::vector<double>& radius, double gap) {
-  std::vector<int> count(position.size(), 0);
-  for (const auto& [i, j] : touching_pairs(position, radius, gap)) ++count[i], ++count[j];
-  return count;
+  return counts_of(touching_pairs(position, radius, gap), position.size());
 }
 
 ContactNumber contact_number(const std::vector<Vec3>& position, const std::vector<double>& radius,
@@ -44,8 +51,7 @@ ContactNumber contact_number(const std::vector<Vec3>& position, const std::vecto
   z.contacts = pairs.size();
   z.z = z.grains ? 2.0 * static_cast<double>(z.contacts) / z.grains : 0.0;
 
-  std::vector<int> count(position.size(), 0);
-  for (const auto& [i, j] : pairs) ++count[i], ++count[j];
+  std::vector<int> count = counts_of(pairs, position.size());
   // 0: kept, 1: removed in an earlier round, 2: removed in this round.
   std::vector<char> rattler(position.size(), 0);
   // Rounds of removal until no grain below the threshold is left (each round removes at least
