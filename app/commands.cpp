@@ -13,6 +13,7 @@
 #include "summary.hpp"
 #include "talus/analysis/dam_break.hpp"
 #include "talus/analysis/flume_observer.hpp"
+#include "talus/analysis/hollow_sphere.hpp"
 #include "talus/analysis/triaxial.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
@@ -109,6 +110,14 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       observers.insert(observers.begin(), triaxial.get());
     }
   }
+  std::unique_ptr<analysis::HollowSphereObserver> hollow;
+  if constexpr (D == 3) {
+    if (sc.hollow_sphere) {
+      hollow = std::make_unique<analysis::HollowSphereObserver>(out, sc, run->system, resume,
+                                                                run->system.time);
+      observers.insert(observers.begin(), hollow.get());  // flushed before the checkpoint
+    }
+  }
   try {
     const auto stats = dem::run_dem<D>(*run, control, observers, !resume);
     summary.steps = stats.steps;
@@ -121,6 +130,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       }
     }
     if (triaxial) summary.analysis["triaxial"] = triaxial->finish();
+    if (hollow) summary.analysis["hollow_sphere"] = hollow->finish();
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());

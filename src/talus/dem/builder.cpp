@@ -77,6 +77,8 @@ Region region_of(const ParticleSourceParams& s, int dim) {
   reg.box_min = s.box_min;
   reg.box_max = s.box_max;
   reg.cylinder_radius = s.cylinder_radius;
+  reg.shell_inner_radius = s.shell_inner_radius;
+  reg.shell_outer_radius = s.shell_outer_radius;
   return reg;
 }
 

@@ -158,22 +158,34 @@ struct Walls<2> {
 
 // 3D: the box; each face is a plane, and a sum of plane springs is exact for a convex region.
 // A cylinder keeps the two z faces (4, 5) and replaces the four side faces by its mantle (face 6).
+// A spherical shell has only its outer sphere (face 7) and inner sphere (face 8): the springs act
+// along the radius, and the inner one is the only non-convex boundary, whose spring is still
+// exact since a ball touches a sphere in one point.
 template <>
 struct Walls<3> {
   using V = Vec<3>;
   V lo, hi;
   double radius = 0.0;  // > 0: cylinder about the vertical axis through `axis`
   Eigen::Vector2d axis = Eigen::Vector2d::Zero();
+  double outer = 0.0, inner = 0.0;  // outer > 0: spherical shell about `centre`
+  V centre = V::Zero();
   Walls(const Region& region, const Vec3& origin, double unit)
       : lo((region.box_min - origin) / unit), hi((region.box_max - origin) / unit) {
     if (region.cylinder_radius > 0) {
       radius = region.cylinder_radius / unit;
       axis = 0.5 * (lo + hi).head<2>();
     }
+    if (region.shell_outer_radius > 0) {
+      outer = region.shell_outer_radius / unit;
+      inner = region.shell_inner_radius / unit;
+      centre = 0.5 * (lo + hi);
+    }
   }
-  int first_face() const { return radius > 0 ? 4 : 0; }
-  int last_face() const { return radius > 0 ? 7 : 6; }
+  int first_face() const { return outer > 0 ? 7 : radius > 0 ? 4 : 0; }
+  int last_face() const { return outer > 0 ? 9 : radius > 0 ? 7 : 6; }
   double face_distance(int face, const V& p) const {
+    if (face == 7) return outer - (p - centre).norm();
+    if (face == 8) return (p - centre).norm() - inner;
     if (face == 6) return radius - (p.head<2>() - axis).norm();
     const int a = face / 2;
     return face % 2 == 0 ? p[a] - lo[a] : hi[a] - p[a];
@@ -192,7 +204,11 @@ struct Walls<3> {
     for (int c = 0; c < n; ++c) {
       const double penetration = r - face_distance(ids[c], p);
       if (penetration <= 0) continue;
-      if (ids[c] == 6) {  // towards the axis
+      if (ids[c] == 7 || ids[c] == 8) {  // along the radius, inwards from the outer sphere
+        const V d = p - centre;
+        const double len = d.norm();
+        if (len > 0) f += (ids[c] == 7 ? -penetration : penetration) / len * d;
+      } else if (ids[c] == 6) {  // towards the axis
         const Eigen::Vector2d d = p.head<2>() - axis;
         const double len = d.norm();
         if (len > 0) f.head<2>() -= penetration / len * d;
@@ -204,6 +220,13 @@ struct Walls<3> {
   }
   void project_inside(V& p, double r) const {
     const double margin = r * (1.0 + kInsideSlack) + 1e-12 * r;
+    if (outer > 0) {  // along the radius into the band of radii where the ball fits
+      const V d = p - centre;
+      const double len = d.norm(), lo_r = inner + margin, hi_r = std::max(lo_r, outer - margin);
+      const double want = std::clamp(len, lo_r, hi_r);
+      if (want != len) p = centre + (len > 0 ? V(d * (want / len)) : V(V::UnitX() * want));
+      return;
+    }
     for (int a = radius > 0 ? 2 : 0; a < 3; ++a)
       p[a] = hi[a] - lo[a] > 2 * margin ? std::clamp(p[a], lo[a] + margin, hi[a] - margin)
                                         : 0.5 * (lo[a] + hi[a]);
@@ -569,6 +592,8 @@ OverlapStats stats_of(const Region& region, const std::vector<PackedParticle>& p
 }  // namespace
 
 double Region::area_or_volume() const {
+  if (dimension == 3 && shell_outer_radius > 0)
+    return 4.0 / 3.0 * M_PI * (std::pow(shell_outer_radius, 3) - std::pow(shell_inner_radius, 3));
   if (dimension == 3 && cylinder_radius > 0)
     return M_PI * cylinder_radius * cylinder_radius * (box_max.z() - box_min.z());
   if (dimension == 3) return (box_max - box_min).prod();

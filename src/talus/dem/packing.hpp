@@ -21,11 +21,14 @@ struct PackedParticle {
 // Where particles go. 2D: a simple polygon (either orientation; z ignored) or, when the polygon
 // is empty, the rectangle box_min..box_max in x, y. 3D: the box or, when cylinder_radius > 0, the
 // cylinder of that radius about the vertical axis through the centre of the box, from box_min.z to
-// box_max.z (the triaxial sample inside its membrane).
+// box_max.z (the triaxial sample inside its membrane), or, when shell_outer_radius > 0, the
+// spherical shell shell_inner_radius < |x - c| < shell_outer_radius about the box centre c (the
+// hollow sphere; the box must contain the outer sphere).
 struct Region {
   int dimension = 2;
   std::vector<Vec3> polygon;
   double cylinder_radius = 0.0;
+  double shell_inner_radius = 0.0, shell_outer_radius = 0.0;
   Vec3 box_min = Vec3::Zero();
   Vec3 box_max = Vec3::Zero();
 

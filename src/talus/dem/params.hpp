@@ -124,9 +124,12 @@ struct ParticleSourceParams {
   std::string jitter = "none";  // none | peer
   // RandomFill / Grow: region is a box or a polygon (2D, counter-clockwise),
   // or (3D, cylinder_radius > 0) the vertical cylinder of that radius whose
-  // bounding box is box_min..box_max.
+  // bounding box is box_min..box_max, or (3D, shell_outer_radius > 0) the
+  // spherical shell shell_inner_radius < |x - c| < shell_outer_radius about
+  // the centre c of the box (the hollow sphere's grains between two membranes).
   std::vector<Vec3> polygon;
   double cylinder_radius = 0.0;
+  double shell_inner_radius = 0.0, shell_outer_radius = 0.0;
   double radius_min = 0.0, radius_max = 0.0;
   double porosity = 0.0;          // RandomFill target porosity
   double packing_fraction = 0.0;  // Grow target solid fraction
@@ -202,8 +205,9 @@ enum class MembraneMeshKind { FlatSheet, Cylinder, GeodesicSphere, GeodesicHemis
 // Which membrane particles are pinned: none; every particle on a boundary edge
 // ("edge": a sheet's rim, a hemisphere's equator, an open cylinder's two end
 // rings); the boundary ring at the bottom or top of a cylinder (the cap's
-// outer ring of a capped one); both rings.
-enum class MembraneFixed { None, Edge, BottomRing, TopRing, BothRings };
+// outer ring of a capped one); both rings; every particle ("all": a rigid
+// body, e.g. the hollow sphere's object, whose supports' reaction is measured).
+enum class MembraneFixed { None, Edge, BottomRing, TopRing, BothRings, All };
 
 struct MembraneSpec {
   std::string name;
@@ -229,6 +233,18 @@ struct MembraneSpec {
   double bending_stiffness = 0.0;  // k_el, N m
   double bending_damping = 0.0;    // k_diss, N m s
   double pressure = 0.0;           // p, Pa, force A p n per triangle (n outwards): < 0 squeezes
+  // The pressure is 0 before pressure_ramp_start and reaches `pressure` at
+  // pressure_ramp_end, linearly in between (both 0: applied from t = 0).
+  double pressure_ramp_start = 0.0, pressure_ramp_end = 0.0;
+  // geodesic_sphere: the particles start at stretch x radius from the centre,
+  // the springs' rest lengths are those of `radius` (the hollow sphere's outer
+  // membrane held at 1.25 R while the grains are placed, then let go).
+  double stretch = 1.0;
+  // geodesic_sphere: > 0 puts a rigid frictionless sphere of this radius at
+  // the centre that the particles cannot enter (the hollow sphere's object
+  // under its membrane): it pushes on them, never pulls, so the membrane can
+  // lift off it.
+  double core_radius = 0.0;
   MembraneFixed fixed = MembraneFixed::None;
   // Cylinders: walls whose translation the pinned bottom / top ring follows
   // (the triaxial plates); empty = the ring stays where it is.
@@ -248,6 +264,16 @@ struct TriaxialParams {
   std::string bottom_plate, top_plate, membrane;
 };
 
+// The hollow sphere (spec/membranes-and-jamming.md, Götz 2024 §4.3): the
+// object is a rigid geodesic sphere (a membrane with fixed = "all") inside a
+// shell of grains closed by the membrane `shell`; the analysis reads the
+// normal force of the object's supports (hollow_sphere.hpp).
+struct HollowSphereParams {
+  std::string object, shell;
+  // Poisson ratio of the continuum comparison (eq. 33); the grains' by default.
+  double poisson_ratio = 0.0;
+};
+
 struct DemScenario {
   std::string name;
   std::string description;
@@ -261,6 +287,7 @@ struct DemScenario {
   std::optional<FlumeParams> flume;
   std::optional<DamBreakParams> dam_break;
   std::optional<TriaxialParams> triaxial;
+  std::optional<HollowSphereParams> hollow_sphere;
 };
 
 }  // namespace talus::dem

@@ -26,7 +26,7 @@ using detail::required_number_in;
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}, {"compare", 3}};
 const std::vector<std::string_view> kTopLevelKeys = {
     "method",    "name",  "description", "run",       "contact",  "materials", "flume",
-    "dam_break", "walls", "particles",   "membranes", "triaxial", "output"};
+    "dam_break", "walls", "particles",   "membranes", "triaxial", "output",    "hollow_sphere"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;
@@ -256,6 +256,7 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   }
   check_densities(s, material_readers);
   if (auto tri = root.optional_table("triaxial")) detail::read_triaxial(*tri, s);
+  if (auto hs = root.optional_table("hollow_sphere")) detail::read_hollow_sphere(*hs, s);
 
   TomlReader output = table_or_empty(root, "output", empty);
   s.output = read_output(output);

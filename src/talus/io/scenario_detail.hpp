@@ -54,7 +54,8 @@ inline const EnumNames<dem::MembraneFixed> kMembraneFixed = {
     {"edge", dem::MembraneFixed::Edge},
     {"bottom_ring", dem::MembraneFixed::BottomRing},
     {"top_ring", dem::MembraneFixed::TopRing},
-    {"both_rings", dem::MembraneFixed::BothRings}};
+    {"both_rings", dem::MembraneFixed::BothRings},
+    {"all", dem::MembraneFixed::All}};
 inline const std::vector<std::string> kJitterNames = {"none", "peer"};
 
 template <typename E>
@@ -132,6 +133,11 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m);
 // and its table for the resolved scenario.
 void read_triaxial(TomlReader& r, dem::DemScenario& s);
 nlohmann::ordered_json triaxial_table(const dem::TriaxialParams& t);
+// [hollow_sphere] (after membranes and particles): fills s.hollow_sphere,
+// checking that the object is a fixed sphere inside the shell's membrane
+// under the same vacuum; and its table for the resolved scenario.
+void read_hollow_sphere(TomlReader& r, dem::DemScenario& s);
+nlohmann::ordered_json hollow_sphere_table(const dem::HollowSphereParams& h);
 // Pieces of [[particles]] that [flume.release] shares.
 // box_min/box_max of a source from its polygon.
 void set_polygon_bounds(dem::ParticleSourceParams& s);

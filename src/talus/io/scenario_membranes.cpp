@@ -14,9 +14,9 @@ using dem::MembraneFixed;
 using dem::MembraneMeshKind;
 
 // The keys each mesh kind reads, to say which kind a stray key belongs to.
-const std::vector<std::string_view> kMeshKeys = {"origin", "size",    "center", "radius",
-                                                 "height", "spacing", "caps",   "frequency",
-                                                 "file",   "scale",   "offset"};
+const std::vector<std::string_view> kMeshKeys = {
+    "origin",    "size", "center", "radius", "height",  "spacing",    "caps",
+    "frequency", "file", "scale",  "offset", "stretch", "core_radius"};
 
 void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
   switch (m.mesh) {
@@ -49,6 +49,13 @@ void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
       r.expect(f >= 1 && f <= 256 && (!half || f % 2 == 0), "frequency",
                half ? "an even integer in [2, 256]" : "an integer in [1, 256]");
       m.frequency = static_cast<int>(f);
+      // The hemisphere's fixed rim would have to move with it: spheres only.
+      if (!half) {
+        m.stretch = number_in(r, "stretch", 1.0, positive());
+        m.core_radius = number_in(r, "core_radius", 0.0, non_negative());
+        r.expect(m.core_radius <= m.radius, "core_radius",
+                 fmt::format("a core no larger than the radius ({} m)", m.radius));
+      }
       break;
     }
     case MembraneMeshKind::Stl:
@@ -72,6 +79,18 @@ void check_fixed(TomlReader& r, const dem::MembraneSpec& m) {
     r.fail("fixed",
            "\"edge\": a closed membrane has no edge (use \"none\", or the rings of a "
            "cylinder)");
+}
+
+// pressure_ramp = [start, end]: the pressure grows linearly from 0 at start
+// to `pressure` at end (Götz applies the vacuum stepwise after relaxing).
+void read_pressure_ramp(TomlReader& r, dem::MembraneSpec& m) {
+  if (!r.has("pressure_ramp")) return;
+  const Vec3 ramp = r.required_vec3("pressure_ramp");
+  r.expect(ramp.z() == 0.0 && ramp.x() >= 0.0 && ramp.y() > ramp.x(), "pressure_ramp",
+           "[start, end] in s with 0 <= start < end");
+  r.expect(m.pressure != 0.0, "pressure_ramp", "a non-zero 'pressure' to ramp to");
+  m.pressure_ramp_start = ramp.x();
+  m.pressure_ramp_end = ramp.y();
 }
 
 // bottom_ring_wall / top_ring_wall: the pinned ring follows that wall.
@@ -114,6 +133,7 @@ dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemConte
   m.bending_stiffness = number_in(r, "bending_stiffness", 0.0, non_negative());
   m.bending_damping = number_in(r, "bending_damping", 0.0, non_negative());
   m.pressure = r.number("pressure", 0.0);
+  read_pressure_ramp(r, m);
   m.fixed = r.enumeration("fixed", kMembraneFixed, MembraneFixed::None);
   check_fixed(r, m);
   read_ring_walls(r, m, ctx);
@@ -146,6 +166,10 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
       t["center"] = vec(m.origin);
       t["radius"] = m.radius;
       t["frequency"] = m.frequency;
+      if (m.mesh == MembraneMeshKind::GeodesicSphere) {
+        t["stretch"] = m.stretch;
+        t["core_radius"] = m.core_radius;
+      }
       break;
     case MembraneMeshKind::Stl:
       t["file"] = m.file;
@@ -160,6 +184,8 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
   t["bending_stiffness"] = m.bending_stiffness;
   t["bending_damping"] = m.bending_damping;
   t["pressure"] = m.pressure;
+  if (m.pressure_ramp_end > 0)
+    t["pressure_ramp"] = Json::array({m.pressure_ramp_start, m.pressure_ramp_end});
   t["fixed"] = name_of(kMembraneFixed, m.fixed);
   if (!m.bottom_ring_wall.empty()) t["bottom_ring_wall"] = m.bottom_ring_wall;
   if (!m.top_ring_wall.empty()) t["top_ring_wall"] = m.top_ring_wall;

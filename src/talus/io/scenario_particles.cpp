@@ -12,8 +12,9 @@ namespace {
 using dem::SourceKind;
 
 const std::vector<std::string_view> kSourceKeys = {
-    "list",       "box",      "spacing",          "radius", "jitter", "polygon", "radius_min",
-    "radius_max", "porosity", "packing_fraction", "shrink", "count",  "file",    "cylinder"};
+    "list",    "box",        "spacing",    "radius",   "jitter",
+    "polygon", "radius_min", "radius_max", "porosity", "packing_fraction",
+    "shrink",  "count",      "file",       "cylinder", "shell"};
 
 dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_material,
                                 const DemContext& ctx) {
@@ -33,12 +34,16 @@ dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_materia
 
 // A box, in 2D a polygon (stored counter-clockwise, with its bounding box), in
 // 3D a vertical cylinder {center (of its base), radius, height} (stored as its
-// bounding box and radius).
+// bounding box and radius) or a spherical shell {center, inner_radius,
+// outer_radius} (stored as the outer sphere's bounding box and both radii).
 void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ctx) {
-  const int given = r.has("box") + r.has("polygon") + r.has("cylinder");
+  const int given = r.has("box") + r.has("polygon") + r.has("cylinder") + r.has("shell");
   if (given != 1) {
-    const char* key = given == 0 ? "box" : (r.has("cylinder") ? "cylinder" : "polygon");
-    r.fail(key, "expected exactly one of 'box', 'polygon' (2D) or 'cylinder' (3D)");
+    const char* key = given == 0          ? "box"
+                      : r.has("cylinder") ? "cylinder"
+                      : r.has("shell")    ? "shell"
+                                          : "polygon";
+    r.fail(key, "expected exactly one of 'box', 'polygon' (2D), 'cylinder' or 'shell' (3D)");
   }
   if (auto cyl = r.optional_table("cylinder")) {
     if (ctx.dimension != 3) r.fail("cylinder", "cylinders are for 3D runs; use 'polygon' in 2D");
@@ -48,6 +53,18 @@ void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& 
     cyl->finish();
     s.box_min = c - Vec3(s.cylinder_radius, s.cylinder_radius, 0.0);
     s.box_max = c + Vec3(s.cylinder_radius, s.cylinder_radius, h);
+    return;
+  }
+  if (auto sh = r.optional_table("shell")) {
+    if (ctx.dimension != 3) r.fail("shell", "spherical shells are for 3D runs");
+    const Vec3 c = required_point(*sh, "center", ctx);
+    s.shell_inner_radius = required_number_in(*sh, "inner_radius", non_negative());
+    s.shell_outer_radius = required_number_in(*sh, "outer_radius", positive());
+    sh->expect(s.shell_outer_radius > s.shell_inner_radius, "outer_radius",
+               fmt::format("an outer radius above inner_radius ({} m)", s.shell_inner_radius));
+    sh->finish();
+    s.box_min = c - Vec3::Constant(s.shell_outer_radius);
+    s.box_max = c + Vec3::Constant(s.shell_outer_radius);
     return;
   }
   if (r.has("box")) {

@@ -180,7 +180,11 @@ class Writer {
       }
       t["list"] = std::move(list);
     }
-    if (fill && s.cylinder_radius > 0) {
+    if (fill && s.shell_outer_radius > 0) {
+      t["shell"] = Json{{"center", vec(0.5 * (s.box_min + s.box_max))},
+                        {"inner_radius", s.shell_inner_radius},
+                        {"outer_radius", s.shell_outer_radius}};
+    } else if (fill && s.cylinder_radius > 0) {
       t["cylinder"] =
           Json{{"center", vec(Vec3(0.5 * (s.box_min.x() + s.box_max.x()),
                                    0.5 * (s.box_min.y() + s.box_max.y()), s.box_min.z()))},
@@ -300,6 +304,7 @@ Json scenario_table(const dem::DemScenario& s) {
     doc["membranes"] = std::move(membranes);
   }
   if (s.triaxial) doc["triaxial"] = detail::triaxial_table(*s.triaxial);
+  if (s.hollow_sphere) doc["hollow_sphere"] = detail::hollow_sphere_table(*s.hollow_sphere);
   doc["output"] = Writer::output(s.output);
   return doc;
 }

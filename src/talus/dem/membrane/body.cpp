@@ -2,6 +2,12 @@
 
 namespace talus::dem::membrane {
 
+double pressure_at(const MembraneBody& m, double t) {
+  if (!(m.ramp_end > 0) || t >= m.ramp_end) return m.pressure;
+  if (t <= m.ramp_start) return 0.0;
+  return m.pressure * (t - m.ramp_start) / (m.ramp_end - m.ramp_start);
+}
+
 double kinetic_energy(const MembraneBody& m) {
   double e = 0.0;
   for (std::size_t i = 0; i < m.body.x.size(); ++i)

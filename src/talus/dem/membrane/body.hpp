@@ -18,6 +18,19 @@ struct MembraneBody {
   // everything the membrane holds.
   Vec3 reaction = Vec3::Zero();
   int contacts = 0;  // grain-membrane contacts in the last force pass
+  // A ramped pressure (ramp_end > 0): 0 before ramp_start, `pressure` from
+  // ramp_end on, linear in between. MembraneStep then sets body.params.pressure
+  // from it before each force pass, so a resumed run needs no state for it;
+  // without a ramp body.params.pressure holds at all times.
+  double pressure = 0.0, ramp_start = 0.0, ramp_end = 0.0;
+  // A rigid core (core_radius > 0) that the particles rest on: MembraneStep
+  // keeps them at |x - core_centre| >= core_radius and lets the core take the
+  // inward part of the force on a particle that sits on it (on_core).
+  double core_radius = 0.0;
+  Vec3 core_centre = Vec3::Zero();
+  bool on_core(const Vec3& x) const {
+    return core_radius > 0 && (x - core_centre).norm() <= core_radius * (1.0 + 1e-9);
+  }
   // Contacts of its particles with its own triangles (self_contact.hpp): off
   // unless the scenario asks, since most membranes never fold onto themselves.
   bool self_contact = false;
@@ -25,6 +38,7 @@ struct MembraneBody {
   int self_contacts = 0;      // in the last force pass
 };
 
+double pressure_at(const MembraneBody& m, double t);
 double kinetic_energy(const MembraneBody& m);
 Vec3 momentum(const MembraneBody& m);
 // Mean spring force k_sp (r - r0) of each triangle's three edges (N, > 0 stretched).

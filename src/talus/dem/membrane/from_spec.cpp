@@ -71,8 +71,17 @@ MembraneBody make_membrane_body(const MembraneSpec& s, int material) {
   b.name = s.name;
   b.material = material;
   b.self_contact = s.self_contact;
+  b.pressure = s.pressure;
+  b.ramp_start = s.pressure_ramp_start;
+  b.ramp_end = s.pressure_ramp_end;
+  b.core_radius = s.core_radius;
+  b.core_centre = s.origin;
   b.body = make_membrane(generate(s), mp);
   auto& m = b.body;
+  // Rest lengths and angles stay those of the generated sphere: a sphere
+  // scaled about its centre keeps its dihedral angles, only the springs stretch.
+  if (s.stretch != 1.0)
+    for (Vec3& x : m.x) x = s.origin + s.stretch * (x - s.origin);
   switch (s.fixed) {
     case MembraneFixed::None:
       break;
@@ -89,6 +98,9 @@ MembraneBody make_membrane_body(const MembraneSpec& s, int material) {
     case MembraneFixed::BothRings:
       fix_ring(s, m, false);
       fix_ring(s, m, true);
+      break;
+    case MembraneFixed::All:
+      std::fill(m.fixed.begin(), m.fixed.end(), 1);
       break;
   }
   if (s.fixed != MembraneFixed::None &&

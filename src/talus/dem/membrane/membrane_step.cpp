@@ -25,11 +25,37 @@ MembraneStep::MembraneStep(const DemSystem<3>& s) {
   edge_forces_.resize(s.membranes.size());
 }
 
+namespace {
+
+// The force that moves particle i: on a rigid core the core takes the inward
+// radial part (a frictionless unilateral contact); m.f keeps the whole force,
+// so the core's load is what analysis reads from it.
+Vec3 free_force(const MembraneBody& mb, std::size_t i) {
+  const Vec3& f = mb.body.f[i];
+  if (!mb.on_core(mb.body.x[i])) return f;
+  const Vec3 e = (mb.body.x[i] - mb.core_centre).normalized();
+  const double fr = f.dot(e);
+  return fr < 0 ? Vec3(f - fr * e) : f;
+}
+
+// Back onto the core a particle that drifted into it, without its inward speed.
+void keep_off_core(const MembraneBody& mb, Vec3& x, Vec3& v) {
+  const Vec3 d = x - mb.core_centre;
+  const double r = d.norm();
+  if (!(r < mb.core_radius) || !(r > 0)) return;
+  const Vec3 e = d / r;
+  x = mb.core_centre + mb.core_radius * e;
+  const double vr = v.dot(e);
+  if (vr < 0) v -= vr * e;
+}
+
+}  // namespace
+
 void MembraneStep::kick(DemSystem<3>& s, double h) const {
   for (auto& mb : s.membranes) {
     auto& m = mb.body;
     for (std::size_t i = 0; i < m.x.size(); ++i)
-      if (!m.fixed[i]) m.v[i] += (h / m.mass[i]) * m.f[i] + h * s.gravity;
+      if (!m.fixed[i]) m.v[i] += (h / m.mass[i]) * free_force(mb, i) + h * s.gravity;
   }
 }
 
@@ -41,6 +67,7 @@ void MembraneStep::step(DemSystem<3>& s) {
     for (std::size_t i = 0; i < m.x.size(); ++i) {
       if (!m.fixed[i]) {
         m.x[i] += dt * m.v[i];
+        if (mb.core_radius > 0) keep_off_core(mb, m.x[i], m.v[i]);
       } else if (m.follows[i] >= 0) {  // the walls are already at the new time
         const auto& w = s.walls[m.follows[i]];
         m.x[i] = m.anchor[i] + w.displacement(s.time);
@@ -88,6 +115,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
     std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
+    if (mb.ramp_end > 0) m.params.pressure = pressure_at(mb, s.time);
     add_internal_forces_tasks(m, edge_forces_[k]);
     mb.memory.begin_step(kLanes);
     // The triangles' bounding box, grown by the largest grain radius: grains
@@ -142,16 +170,17 @@ double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const do
     double mv = 1e300;
     for (std::size_t i = 0; i < m.x.size(); ++i)
       if (!m.fixed[i]) mv = std::min(mv, m.mass[i]);
-    if (mv >= 1e300) continue;
+    // A membrane with every particle fixed (a rigid body) is infinitely
+    // heavy: the grain's own mass is the reduced mass.
     for (std::size_t a = 0; a < m_min.size(); ++a) {
       if (m_min[a] >= 1e300) continue;
-      const double me = m_min[a] * mv / (m_min[a] + mv);
+      const double me = mv >= 1e300 ? m_min[a] : m_min[a] * mv / (m_min[a] + mv);
       best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(static_cast<int>(a), k),
                                                                   me, r_min[a], v_ref));
     }
     // Two particles of mass mv: the least reduced mass a self-contact can
     // have (the contact point's mass is at least mv).
-    if (s.membranes[k].self_contact)
+    if (s.membranes[k].self_contact && mv < 1e300)
       best = std::min(best, ViscoelasticHertz::critical_time_step(self_coeffs_[k], 0.5 * mv,
                                                                   self_contact_radius(m), v_ref));
   }
