@@ -61,16 +61,26 @@ TriangleRest triangle_rest(const Vec3& a, const Vec3& b, const Vec3& c, double s
   return {dm.inverse(), 0.5 * std::abs(dm.determinant())};
 }
 
-TriangleTension triangle_tension(const std::array<Vec3, 3>& x, const TriangleRest& rest,
-                                 double stiffness, double poisson) {
-  const Principal p = principal(x, rest);
+namespace {
+
+// Principal strains and tensions of a deformed triangle (no direction yet).
+TriangleTension tension_of(const Principal& p, double stiffness, double poisson) {
   TriangleTension t;
   t.e1 = p.stretch[1] - 1.0;
   t.e2 = p.stretch[0] - 1.0;
   const Law law = relaxed(t.e1, t.e2, stiffness, poisson);
   t.n1 = law.n1;
   t.n2 = law.n2;
-  if (law.n1 > 0.0 && p.stretch[1] > 0.0) t.direction = p.F * p.V.col(1) / p.stretch[1];
+  return t;
+}
+
+}  // namespace
+
+TriangleTension triangle_tension(const std::array<Vec3, 3>& x, const TriangleRest& rest,
+                                 double stiffness, double poisson) {
+  const Principal p = principal(x, rest);
+  TriangleTension t = tension_of(p, stiffness, poisson);
+  if (t.n1 > 0.0 && p.stretch[1] > 0.0) t.direction = p.F * p.V.col(1) / p.stretch[1];
   return t;
 }
 
@@ -83,18 +93,13 @@ double triangle_energy(const std::array<Vec3, 3>& x, const TriangleRest& rest, d
 TriangleTension triangle_forces(const std::array<Vec3, 3>& x, const TriangleRest& rest,
                                 double stiffness, double poisson, std::array<Vec3, 3>& f) {
   const Principal p = principal(x, rest);
-  TriangleTension t;
-  t.e1 = p.stretch[1] - 1.0;
-  t.e2 = p.stretch[0] - 1.0;
-  const Law law = relaxed(t.e1, t.e2, stiffness, poisson);
-  t.n1 = law.n1;
-  t.n2 = law.n2;
+  TriangleTension t = tension_of(p, stiffness, poisson);
   for (auto& fi : f) fi.setZero();
-  if (law.n1 <= 0.0) return t;  // slack (n2 <= n1 always)
+  if (t.n1 <= 0.0) return t;  // slack (n2 <= n1 always)
   // dw/dF = sum_i n_i u_i v_i^T (d l_i / dF = u_i v_i^T, u_i = F v_i / l_i);
   // dW/dDs = A0 dw/dF Dm^-T; the forces are minus that.
   Mat32 P = Mat32::Zero();
-  const double n[2] = {law.n2, law.n1};
+  const double n[2] = {t.n2, t.n1};
   for (int i = 0; i < 2; ++i) {
     if (n[i] == 0.0 || !(p.stretch[i] > 0.0)) continue;
     const Vec3 u = p.F * p.V.col(i) / p.stretch[i];
