@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "talus/io/scenario_detail.hpp"
 
@@ -16,7 +17,7 @@ using dem::MembraneMeshKind;
 // The keys each mesh kind reads, to say which kind a stray key belongs to.
 const std::vector<std::string_view> kMeshKeys = {"origin", "size",    "center", "radius",
                                                  "height", "spacing", "caps",   "frequency",
-                                                 "file",   "scale",   "offset"};
+                                                 "file",   "scale",   "offset", "edge_radius"};
 
 void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
   switch (m.mesh) {
@@ -51,6 +52,34 @@ void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
       m.frequency = static_cast<int>(f);
       break;
     }
+    case MembraneMeshKind::Box: {
+      m.origin = point_or(r, "center", ctx, Vec3::Zero());
+      if (!r.has("size")) r.missing("size", "missing (expected [lx, ly, lz] in m)");
+      const Vec3 size = r.required_vec3("size");
+      r.expect(size.minCoeff() > 0, "size", "[lx, ly, lz] with every side > 0");
+      m.size_x = size.x();
+      m.size_y = size.y();
+      m.size_z = size.z();
+      const double half = 0.5 * size.minCoeff();
+      m.edge_radius = number_in(r, "edge_radius", 0.0, non_negative());
+      r.expect(m.edge_radius <= half, "edge_radius",
+               fmt::format("at most half the smallest side ({} m)", half));
+      m.spacing = required_number_in(r, "spacing", positive());
+      // rounded_box's limits, said here with the file and line: each quarter
+      // arc and each flat part gets intervals of at least half the spacing.
+      r.expect(m.edge_radius == 0 || M_PI * m.edge_radius / 4 >= 0.5 * m.spacing, "spacing",
+               fmt::format("a spacing of at most pi edge_radius / 2 = {} m (coarser cannot "
+                           "resolve the rounded edges)",
+                           M_PI * m.edge_radius / 2));
+      for (int d = 0; d < 3; ++d) {
+        const double flat = size[d] - 2 * m.edge_radius;
+        r.expect(flat <= 1e-12 * size[d] || flat >= 0.5 * m.spacing, "spacing",
+                 fmt::format("a spacing of at most twice the flat part of each side ({} m of "
+                             "the side {} m), or edge_radius = half that side",
+                             flat, size[d]));
+      }
+      break;
+    }
     case MembraneMeshKind::Stl:
       m.file = required_file(r, "file", ctx);
       m.scale = number_in(r, "scale", 1.0, positive());
@@ -67,6 +96,7 @@ void check_fixed(TomlReader& r, const dem::MembraneSpec& m) {
                                 "\"none\"",
                                 name_of(kMembraneFixed, m.fixed)));
   const bool closed = m.mesh == MembraneMeshKind::GeodesicSphere ||
+                      m.mesh == MembraneMeshKind::Box ||
                       (m.mesh == MembraneMeshKind::Cylinder && m.caps);
   if (m.fixed == MembraneFixed::Edge && closed)
     r.fail("fixed",
@@ -114,6 +144,7 @@ dem::MembraneSpec read_membrane(TomlReader& r, std::size_t index, const DemConte
   m.bending_stiffness = number_in(r, "bending_stiffness", 0.0, non_negative());
   m.bending_damping = number_in(r, "bending_damping", 0.0, non_negative());
   m.pressure = r.number("pressure", 0.0);
+  m.pressure_ramp = number_in(r, "pressure_ramp", 0.0, non_negative());
   m.fixed = r.enumeration("fixed", kMembraneFixed, MembraneFixed::None);
   check_fixed(r, m);
   read_ring_walls(r, m, ctx);
@@ -147,6 +178,12 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
       t["radius"] = m.radius;
       t["frequency"] = m.frequency;
       break;
+    case MembraneMeshKind::Box:
+      t["center"] = vec(m.origin);
+      t["size"] = Json::array({m.size_x, m.size_y, m.size_z});
+      t["edge_radius"] = m.edge_radius;
+      t["spacing"] = m.spacing;
+      break;
     case MembraneMeshKind::Stl:
       t["file"] = m.file;
       t["scale"] = m.scale;
@@ -160,6 +197,7 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
   t["bending_stiffness"] = m.bending_stiffness;
   t["bending_damping"] = m.bending_damping;
   t["pressure"] = m.pressure;
+  t["pressure_ramp"] = m.pressure_ramp;
   t["fixed"] = name_of(kMembraneFixed, m.fixed);
   if (!m.bottom_ring_wall.empty()) t["bottom_ring_wall"] = m.bottom_ring_wall;
   if (!m.top_ring_wall.empty()) t["top_ring_wall"] = m.top_ring_wall;

@@ -12,6 +12,10 @@ struct MembraneBody {
   std::string name;
   Membrane body;
   int material = 0;  // index into DemSystem::materials, for grain-membrane contacts
+  // Pressure p reached at t = pressure_ramp after a linear rise from 0 (the
+  // source applies a vacuum gradually: a sudden one would throw the membrane
+  // onto the grains); ramp 0: body.params.pressure is left as it is.
+  double pressure = 0.0, pressure_ramp = 0.0;
   ContactMemory memory;
   // Force the supports exert on the fixed particles in the last force pass:
   // -sum over fixed i of (f_i + m_i g). At rest it carries the weight of

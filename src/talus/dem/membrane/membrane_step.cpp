@@ -88,6 +88,8 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
     std::fill(m.f.begin(), m.f.end(), Vec3::Zero());
+    if (mb.pressure_ramp > 0)
+      m.params.pressure = mb.pressure * std::min(1.0, s.time / mb.pressure_ramp);
     add_internal_forces_tasks(m, edge_forces_[k]);
     mb.memory.begin_step(kLanes);
     // The triangles' bounding box, grown by the largest grain radius: grains
