@@ -69,6 +69,34 @@ TEST(MembraneScenario, SheetParsesWithEveryKey) {
   EXPECT_EQ(m.material, "rubber");
 }
 
+// The granular beam's membrane (Götz §5.2): a closed rounded box, vacuum
+// ramped in.
+const std::string kBoxMesh =
+    "mesh = \"box\"\ncenter = [0, 0, 0.2]\nsize = [0.08, 0.08, 0.4]\nedge_radius = 0.01\n"
+    "spacing = 0.0089";
+const std::string kSheetMesh =
+    "mesh = \"flat_sheet\"\norigin = [0, 0, 0]\nsize = [0.04, 0.04]\nspacing = 0.004";
+
+TEST(MembraneScenario, BoxParsesAndSurvivesTheRoundTrip) {
+  std::string text = edit(edit(kHead + kSheet, kSheetMesh, kBoxMesh), "fixed = \"edge\"",
+                          "pressure_ramp = [0.0, 0.01]");
+  const auto s = parse_dem_scenario(load_scenario_text(text, "box.toml"));
+  ASSERT_EQ(s.membranes.size(), 1u);
+  const auto& m = s.membranes[0];
+  EXPECT_EQ(m.mesh, dem::MembraneMeshKind::Box);
+  EXPECT_EQ(m.origin, Vec3(0, 0, 0.2));
+  EXPECT_DOUBLE_EQ(m.size_x, 0.08);
+  EXPECT_DOUBLE_EQ(m.size_z, 0.4);
+  EXPECT_DOUBLE_EQ(m.edge_radius, 0.01);
+  EXPECT_DOUBLE_EQ(m.spacing, 0.0089);
+  EXPECT_DOUBLE_EQ(m.pressure_ramp_end, 0.01);
+  const auto again = parse_dem_scenario(load_scenario_text(scenario_to_toml(s), "again.toml"));
+  EXPECT_EQ(again.membranes[0].mesh, dem::MembraneMeshKind::Box);
+  EXPECT_DOUBLE_EQ(again.membranes[0].size_y, 0.08);
+  EXPECT_DOUBLE_EQ(again.membranes[0].edge_radius, 0.01);
+  EXPECT_DOUBLE_EQ(again.membranes[0].pressure_ramp_end, 0.01);
+}
+
 TEST(MembraneScenario, ResolvedScenarioKeepsMembranes) {
   const std::string cyl = R"([[membranes]]
 name = "jacket"
@@ -158,6 +186,29 @@ INSTANTIATE_TEST_SUITE_P(
                           "mesh = \"geodesic_sphere\"\nradius = 0.04\nfrequency = 4"),
                      "fixed = \"edge\"", "fixed = \"edge\" # <-"),
                 "fixed", "a closed membrane has no edge"},
+        BadCase{"box_flat_size",
+                edit(edit(kGood, kSheetMesh, kBoxMesh), "size = [0.08, 0.08, 0.4]",
+                     "size = [0.08, 0.0, 0.4] # <-"),
+                "size", "every side > 0"},
+        BadCase{"box_radius_too_large",
+                edit(edit(kGood, kSheetMesh, kBoxMesh), "edge_radius = 0.01",
+                     "edge_radius = 0.05 # <-"),
+                "edge_radius", "at most half the smallest side (0.04 m)"},
+        BadCase{"box_spacing_too_coarse_for_radius",
+                edit(edit(kGood, kSheetMesh, kBoxMesh), "spacing = 0.0089", "spacing = 0.02 # <-"),
+                "spacing", "at most pi edge_radius / 2"},
+        BadCase{"box_flat_part_too_short",
+                edit(edit(kGood, kSheetMesh, kBoxMesh), "edge_radius = 0.01\nspacing = 0.0089",
+                     "edge_radius = 0.039\nspacing = 0.0089 # <-"),
+                "spacing", "twice the flat part"},
+        BadCase{
+            "box_has_no_edge",
+            edit(edit(kGood, kSheetMesh, kBoxMesh), "fixed = \"edge\"", "fixed = \"edge\" # <-"),
+            "fixed", "a closed membrane has no edge"},
+        BadCase{
+            "negative_ramp",
+            edit(kGood, "fixed = \"edge\"", "fixed = \"edge\"\npressure_ramp = [-1, 0.01] # <-"),
+            "pressure_ramp", "0 <= start < end"},
         BadCase{"self_contact_not_boolean",
                 edit(kGood, "fixed = \"edge\"", "fixed = \"edge\"\nself_contact = 1 # <-"),
                 "self_contact", "true or false"},

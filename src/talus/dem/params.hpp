@@ -201,7 +201,7 @@ struct DamBreakParams {
 
 // A membrane of DEM membrane particles on a triangle mesh (spec/membranes-and-jamming.md,
 // Götz 2024 ch. 3; dem/membrane/). 3D runs only.
-enum class MembraneMeshKind { FlatSheet, Cylinder, GeodesicSphere, GeodesicHemisphere, Stl };
+enum class MembraneMeshKind { FlatSheet, Cylinder, GeodesicSphere, GeodesicHemisphere, Box, Stl };
 // Which membrane particles are pinned: none; every particle on a boundary edge
 // ("edge": a sheet's rim, a hemisphere's equator, an open cylinder's two end
 // rings); the boundary ring at the bottom or top of a cylinder (the cap's
@@ -215,12 +215,14 @@ struct MembraneSpec {
   // flat_sheet: lower-left corner `origin`, size [lx, ly] in its plane z = origin.z.
   // cylinder: axis along z through `origin` (the bottom centre), radius, height, caps.
   // geodesic_sphere / geodesic_hemisphere: centre `origin`, radius, frequency.
+  // box: centre `origin`, size [size_x, size_y, size_z], edge_radius, spacing.
   // stl: file, scale, offset.
   Vec3 origin = Vec3::Zero();
-  double size_x = 0.0, size_y = 0.0;
+  double size_x = 0.0, size_y = 0.0, size_z = 0.0;
+  double edge_radius = 0.0;  // m, box: radius of the rounded edges and corners
   double radius = 0.0, height = 0.0;
   bool caps = false;
-  double spacing = 0.0;  // m, target edge length (flat_sheet, cylinder)
+  double spacing = 0.0;  // m, target edge length (flat_sheet, cylinder, box)
   int frequency = 0;     // geodesic meshes
   std::string file;
   double scale = 1.0;

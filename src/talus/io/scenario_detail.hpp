@@ -48,6 +48,7 @@ inline const EnumNames<dem::MembraneMeshKind> kMembraneMeshes = {
     {"cylinder", dem::MembraneMeshKind::Cylinder},
     {"geodesic_sphere", dem::MembraneMeshKind::GeodesicSphere},
     {"geodesic_hemisphere", dem::MembraneMeshKind::GeodesicHemisphere},
+    {"box", dem::MembraneMeshKind::Box},
     {"stl", dem::MembraneMeshKind::Stl}};
 inline const EnumNames<dem::MembraneFixed> kMembraneFixed = {
     {"none", dem::MembraneFixed::None},

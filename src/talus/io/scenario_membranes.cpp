@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "talus/io/scenario_detail.hpp"
 
@@ -15,8 +16,8 @@ using dem::MembraneMeshKind;
 
 // The keys each mesh kind reads, to say which kind a stray key belongs to.
 const std::vector<std::string_view> kMeshKeys = {
-    "origin",    "size", "center", "radius", "height",  "spacing",    "caps",
-    "frequency", "file", "scale",  "offset", "stretch", "core_radius"};
+    "origin",    "size", "center", "radius", "height",  "spacing",     "caps",
+    "frequency", "file", "scale",  "offset", "stretch", "core_radius", "edge_radius"};
 
 void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
   switch (m.mesh) {
@@ -58,6 +59,34 @@ void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
       }
       break;
     }
+    case MembraneMeshKind::Box: {
+      m.origin = point_or(r, "center", ctx, Vec3::Zero());
+      if (!r.has("size")) r.missing("size", "missing (expected [lx, ly, lz] in m)");
+      const Vec3 size = r.required_vec3("size");
+      r.expect(size.minCoeff() > 0, "size", "[lx, ly, lz] with every side > 0");
+      m.size_x = size.x();
+      m.size_y = size.y();
+      m.size_z = size.z();
+      const double half = 0.5 * size.minCoeff();
+      m.edge_radius = number_in(r, "edge_radius", 0.0, non_negative());
+      r.expect(m.edge_radius <= half, "edge_radius",
+               fmt::format("at most half the smallest side ({} m)", half));
+      m.spacing = required_number_in(r, "spacing", positive());
+      // rounded_box's limits, said here with the file and line: each quarter
+      // arc and each flat part gets intervals of at least half the spacing.
+      r.expect(m.edge_radius == 0 || M_PI * m.edge_radius / 4 >= 0.5 * m.spacing, "spacing",
+               fmt::format("a spacing of at most pi edge_radius / 2 = {} m (coarser cannot "
+                           "resolve the rounded edges)",
+                           M_PI * m.edge_radius / 2));
+      for (int d = 0; d < 3; ++d) {
+        const double flat = size[d] - 2 * m.edge_radius;
+        r.expect(flat <= 1e-12 * size[d] || flat >= 0.5 * m.spacing, "spacing",
+                 fmt::format("a spacing of at most twice the flat part of each side ({} m of "
+                             "the side {} m), or edge_radius = half that side",
+                             flat, size[d]));
+      }
+      break;
+    }
     case MembraneMeshKind::Stl:
       m.file = required_file(r, "file", ctx);
       m.scale = number_in(r, "scale", 1.0, positive());
@@ -74,6 +103,7 @@ void check_fixed(TomlReader& r, const dem::MembraneSpec& m) {
                                 "\"none\"",
                                 name_of(kMembraneFixed, m.fixed)));
   const bool closed = m.mesh == MembraneMeshKind::GeodesicSphere ||
+                      m.mesh == MembraneMeshKind::Box ||
                       (m.mesh == MembraneMeshKind::Cylinder && m.caps);
   if (m.fixed == MembraneFixed::Edge && closed)
     r.fail("fixed",
@@ -170,6 +200,12 @@ nlohmann::ordered_json membrane_table(const dem::MembraneSpec& m) {
         t["stretch"] = m.stretch;
         t["core_radius"] = m.core_radius;
       }
+      break;
+    case MembraneMeshKind::Box:
+      t["center"] = vec(m.origin);
+      t["size"] = Json::array({m.size_x, m.size_y, m.size_z});
+      t["edge_radius"] = m.edge_radius;
+      t["spacing"] = m.spacing;
       break;
     case MembraneMeshKind::Stl:
       t["file"] = m.file;

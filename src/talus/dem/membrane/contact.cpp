@@ -220,7 +220,11 @@ GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
       kin.n = (x_mem[tri[1]] - x_mem[tri[0]]).cross(x_mem[tri[2]] - x_mem[tri[0]]).normalized();
     }
     kin.overlap = g.radius - c.distance;
-    const double arm = g.radius - 0.5 * kin.overlap;
+    // Lever arm to the membrane point c.point, where the reactions act (their
+    // weighted sum of vertex positions): with the midpoint of the overlap
+    // instead, each tangential force left a torque (overlap / 2) n x ft
+    // unbalanced, and a free membrane body full of grains under vacuum spun up.
+    const double arm = std::max(0.0, c.distance);
     kin.r_eff = g.radius;
     kin.m_eff = m_eff(c);
     kin.inertia_eff = 0;

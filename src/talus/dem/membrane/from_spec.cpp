@@ -31,6 +31,8 @@ Mesh generate(const MembraneSpec& s) {
       return geodesic_sphere(s.radius, s.frequency, s.origin);
     case MembraneMeshKind::GeodesicHemisphere:
       return geodesic_hemisphere(s.radius, s.frequency, s.origin);
+    case MembraneMeshKind::Box:
+      return rounded_box(Vec3(s.size_x, s.size_y, s.size_z), s.edge_radius, s.spacing, s.origin);
     case MembraneMeshKind::Stl:
       return read_stl_mesh(s.file, s.scale, s.offset);
   }

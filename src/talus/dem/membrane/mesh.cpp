@@ -1,5 +1,7 @@
 #include "talus/dem/membrane/mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -343,6 +345,98 @@ Mesh geodesic_hemisphere(double radius, int frequency, const Vec3& centre) {
     m.triangles.push_back(nt);
   }
   m.build_topology("geodesic_hemisphere");
+  return m;
+}
+
+namespace {
+
+// Outer-box coordinates of the grid lines along one axis of a rounded box with
+// half side `half`: the flat part [-a, a] (a = half - r) in equal intervals,
+// each band [a, half] at a + r tan(theta), theta uniform in [0, pi / 4].
+std::vector<double> box_axis_nodes(double half, double r, double spacing, const char* axis) {
+  const double a = half - r, tol = 1e-12 * half;
+  if (a > tol && 2 * a < 0.5 * spacing)
+    throw InputError(fmt::format(
+        "rounded_box: the flat part of the {} side ({} m) is shorter than half the spacing "
+        "({} m); use an edge radius of half that side or a smaller spacing",
+        axis, 2 * a, spacing));
+  const int flat = a > tol ? std::max(1, static_cast<int>(std::lround(2 * a / spacing))) : 0;
+  const int band = r > 0 ? std::max(1, static_cast<int>(std::lround(M_PI * r / (4 * spacing)))) : 0;
+  std::vector<double> t;
+  for (int k = band; k >= 1; --k) t.push_back(-(a + r * std::tan(M_PI / 4 * k / band)));
+  for (int k = 0; k <= flat; ++k) t.push_back(flat == 0 ? 0.0 : -a + 2 * a * k / flat);
+  for (int k = 1; k <= band; ++k) t.push_back(a + r * std::tan(M_PI / 4 * k / band));
+  t.front() = -half;  // exactly on the outer box, so that faces share their rims
+  t.back() = half;
+  return t;
+}
+
+}  // namespace
+
+Mesh rounded_box(const Vec3& size, double edge_radius, double spacing, const Vec3& centre) {
+  if (!(size.minCoeff() > 0) || !(spacing > 0) || !(edge_radius >= 0))
+    throw InputError("rounded_box: the sides and the spacing must be > 0, the edge radius >= 0");
+  const double r = edge_radius;
+  if (r > 0.5 * size.minCoeff() * (1 + 1e-12))
+    throw InputError(
+        fmt::format("rounded_box: edge radius {} m is larger than half the smallest "
+                    "side ({} m)",
+                    r, 0.5 * size.minCoeff()));
+  if (r > 0 && M_PI * r / 4 < 0.5 * spacing)
+    throw InputError(
+        fmt::format("rounded_box: spacing {} m is too coarse for edge radius {} m "
+                    "(needs spacing <= pi r / 2 = {} m)",
+                    spacing, r, M_PI * r / 2));
+  const Vec3 half = 0.5 * size, inner = (half.array() - r).max(0.0).matrix();
+  std::array<std::vector<double>, 3> nodes;
+  for (int d = 0; d < 3; ++d)
+    nodes[d] = box_axis_nodes(half[d], r, spacing, d == 0 ? "x" : d == 1 ? "y" : "z");
+  // The rounded surface point of outer-box point p.
+  auto round_point = [&](const Vec3& p) {
+    const Vec3 q = p.cwiseMax(-inner).cwiseMin(inner), d = p - q;
+    const double n = d.norm();
+    return Vec3(n > 0 ? Vec3(q + r * d / n) : q);
+  };
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> tris;
+  for (int k = 0; k < 3; ++k)
+    for (const double sign : {-1.0, 1.0}) {
+      // (i, j, k) cyclic, so e_i x e_j = e_k: counterclockwise in (i, j) is
+      // outwards on the + face.
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const int ni = static_cast<int>(nodes[i].size()), nj = static_cast<int>(nodes[j].size());
+      const int base = static_cast<int>(points.size());
+      for (int b = 0; b < nj; ++b)
+        for (int a = 0; a < ni; ++a) {
+          Vec3 p;
+          p[i] = nodes[i][a];
+          p[j] = nodes[j][b];
+          p[k] = sign * half[k];
+          points.push_back(round_point(p));
+        }
+      auto P = [&](int a, int b) { return base + b * ni + a; };
+      auto emit = [&](int p0, int p1, int p2) {
+        tris.push_back(sign > 0 ? std::array<int, 3>{p0, p1, p2} : std::array<int, 3>{p0, p2, p1});
+      };
+      for (int b = 0; b + 1 < nj; ++b)
+        for (int a = 0; a + 1 < ni; ++a) {
+          // Alternating diagonals: no preferred direction in the spring network.
+          if ((a + b) % 2 == 0) {
+            emit(P(a, b), P(a + 1, b), P(a + 1, b + 1));
+            emit(P(a, b), P(a + 1, b + 1), P(a, b + 1));
+          } else {
+            emit(P(a, b), P(a + 1, b), P(a, b + 1));
+            emit(P(a + 1, b), P(a + 1, b + 1), P(a, b + 1));
+          }
+        }
+    }
+  Mesh m;
+  const std::vector<int> index = merge_points(points, 1e-9 * size.maxCoeff(), m.vertices);
+  // Only the faces' shared rims merge (the map is one-to-one on the outer box),
+  // so no triangle collapses; build_topology would reject one that did.
+  for (const auto& t : tris) m.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  for (Vec3& v : m.vertices) v += centre;
+  m.build_topology("rounded_box");
   return m;
 }
 

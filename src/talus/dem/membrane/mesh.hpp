@@ -73,6 +73,20 @@ Mesh geodesic_sphere(double radius, int frequency, const Vec3& centre = Vec3::Ze
 // frequency 16 gives the gripper's 1321 membrane particles.
 Mesh geodesic_hemisphere(double radius, int frequency, const Vec3& centre = Vec3::Zero());
 
+// Closed box of size `size` centred on `centre` whose edges and corners are
+// rounded with radius r (0 <= r <= half the smallest side; 0: sharp edges):
+// the outer box's faces carry quad grids split into triangles (diagonals
+// alternating), each grid point p mapped to q + r (p - q) / |p - q| with q its
+// closest point on the inner box (half sides minus r). Along each axis the flat
+// part gets round(flat / spacing) intervals and each rounded band
+// round(pi r / (4 spacing)) intervals, spaced uniformly in angle
+// (tan-spaced on the outer box), so edges and corners get the equiangular
+// cube-sphere grid. Throws InputError for a spacing too coarse for the radius
+// (r > 0 with pi r / 4 < spacing / 2) or a flat part shorter than half the
+// spacing (but not zero): both would give triangles far shorter than the rest.
+Mesh rounded_box(const Vec3& size, double edge_radius, double spacing,
+                 const Vec3& centre = Vec3::Zero());
+
 // Triangles given as vertex triples (e.g. from an STL file): vertices closer
 // than `tolerance` are merged, degenerate triangles dropped, topology built.
 Mesh mesh_from_triangles(const std::vector<std::array<Vec3, 3>>& triangles, double tolerance,
