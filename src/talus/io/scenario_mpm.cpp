@@ -148,9 +148,8 @@ void check_box_in_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContex
 // lies inside the [grid].
 void check_turned_box_in_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx,
                               const mpm::RigidBodyParams& b) {
-  const Eigen::Matrix3d q = ctx.dimension == 2
-                                ? Eigen::Matrix3d(Eigen::AngleAxisd(b.angle, Vec3::UnitZ()))
-                                : Eigen::Matrix3d(Eigen::AngleAxisd(b.angle, b.axis));
+  // A 2D body's axis stays z, so the 3D rotation is the builder's in both.
+  const Eigen::Matrix3d q = mpm::rigid_rotation<3>(b);
   for (int corner = 0; corner < (1 << ctx.dimension); ++corner) {
     Vec3 c = b.min;
     for (int d = 0; d < ctx.dimension; ++d)
