@@ -101,6 +101,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
     }
   }
   std::unique_ptr<analysis::TriaxialObserver> triaxial;
+  std::unique_ptr<analysis::HollowSphereObserver> hollow;
   if constexpr (D == 3) {
     if (sc.triaxial) {
       triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system, resume,
@@ -109,9 +110,6 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       // killed in between then has triaxial.csv flushed up to it.
       observers.insert(observers.begin(), triaxial.get());
     }
-  }
-  std::unique_ptr<analysis::HollowSphereObserver> hollow;
-  if constexpr (D == 3) {
     if (sc.hollow_sphere) {
       hollow = std::make_unique<analysis::HollowSphereObserver>(out, sc, run->system, resume,
                                                                 run->system.time);
