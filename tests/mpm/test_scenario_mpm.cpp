@@ -72,10 +72,10 @@ TEST(MpmScenario, BadInputNamesFileLineAndKey) {
 
 const std::string kRigid = R"(
 [[rigid_bodies]]
-box = { min = [0.1, 0.1], max = [0.9, 0.15] }
+box = { min = [0.1, 0.3], max = [0.9, 0.35] }
 friction = 0.4
 angle = 10
-motion = { angular_velocity = 30, hinge = [0.5, 0.15], stop = 0.2 }
+motion = { angular_velocity = 30, hinge = [0.5, 0.35], stop = 0.2 }
 )";
 
 TEST(MpmScenario, RigidBodiesParseRoundTripAndBuild) {
@@ -99,8 +99,13 @@ TEST(MpmScenario, RigidBodiesParseRoundTripAndBuild) {
   expect_error(edit(kBase + kRigid, "friction = 0.4", "contact = \"stick\"\nfriction = 0.4"),
                "'friction'");
   expect_error(edit(kBase + kRigid, "stop = 0.2", "start = 0.3, stop = 0.2"), "'stop'");
-  expect_error(edit(kBase + kRigid, "max = [0.9, 0.15]", "max = [1.9, 0.15]"),
+  expect_error(edit(kBase + kRigid, "max = [0.9, 0.35]", "max = [1.9, 0.35]"),
                "[[rigid_bodies]] 'box'");
+  // In 2D too: a plate across the block's corner overlaps it by 0.1 m in x
+  // and in y. (Resting on a plate is fine: the bundled clay block's bottom
+  // y = 0 lies on its incline's top y = 0.)
+  expect_error(kBase + "[[rigid_bodies]]\nbox = { min = [0.2, 0.1], max = [0.5, 0.3] }\n",
+               "overlaps [[bodies]] #1 by 0.1 m");
 }
 
 // 3D rigid bodies turned about an axis (the clay block's run-out and obstacle,
@@ -158,6 +163,14 @@ motion = { hinge = [0.5, 0.4, 0.5] }
   EXPECT_NEAR(ok.rigid_bodies[0].axis.norm(), 1.0, 1e-15);  // normalised
   expect_error(edit(text, "axis = [0, 0, 2]", "axis = [0, 0, 0]"), "'axis'");
   expect_error(edit(text, "angle = 20", "angle = 80"), "once turned by angle about the hinge");
+  // Material starting inside a rigid body is refused. The plate's top face
+  // through the hinge (0.5, 0.4) turned 20 deg: at the block's corner x = 0.6
+  // it is at y = 0.4 + 0.1 tan 20 = 0.436, so a block from y = 0.45 clears
+  // it and one from y = 0.42 does not.
+  EXPECT_NO_THROW(parse_mpm_scenario(load_scenario_text(
+      edit(text, "min = [0.4, 0.5, 0.4]", "min = [0.4, 0.45, 0.4]"), "t.toml")));
+  expect_error(edit(text, "min = [0.4, 0.5, 0.4]", "min = [0.4, 0.42, 0.4]"),
+               "'box': expected a rigid body clear of the material: it overlaps [[bodies]] #1");
   auto thin = ok.rigid_bodies[0];
   thin.max.y() = thin.min.y() + 0.1;  // one cell, one particle per cell
   thin.per_cell = 1;
