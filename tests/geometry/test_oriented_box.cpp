@@ -20,8 +20,8 @@ OrientedBox unit_cube_at(const Vec3& centre) {
 
 TEST(OrientedBox, AlignedCubesOverlapByTheirShift) {
   // Unit cubes 0.75 apart along x share a slab 0.25 thick.
-  EXPECT_NEAR(overlap_depth(unit_cube_at(Vec3::Zero()), unit_cube_at(Vec3(0.75, 0.1, 0.0))),
-              0.25, 1e-12);
+  EXPECT_NEAR(overlap_depth(unit_cube_at(Vec3::Zero()), unit_cube_at(Vec3(0.75, 0.1, 0.0))), 0.25,
+              1e-12);
   // Faces touching: depth 0 (a block resting on a plate is not an overlap).
   EXPECT_NEAR(overlap_depth(unit_cube_at(Vec3::Zero()), unit_cube_at(Vec3(1.0, 0.0, 0.0))), 0.0,
               1e-12);
@@ -31,8 +31,8 @@ TEST(OrientedBox, AlignedCubesOverlapByTheirShift) {
 TEST(OrientedBox, TurnedAboutAPivotMovesTheCentre) {
   // The box [1, 2] x [0, 1] x [0, 1] turned 90 deg about z through the origin
   // lies in [-1, 0] x [1, 2] x [0, 1].
-  const auto b = OrientedBox::turned(Vec3(1, 0, 0), Vec3(2, 1, 1), about(Vec3::UnitZ(), 90.0),
-                                     Vec3::Zero());
+  const auto b =
+      OrientedBox::turned(Vec3(1, 0, 0), Vec3(2, 1, 1), about(Vec3::UnitZ(), 90.0), Vec3::Zero());
   EXPECT_NEAR((b.centre - Vec3(-0.5, 1.5, 0.5)).norm(), 0.0, 1e-12);
   EXPECT_GT(overlap_depth(b, unit_cube_at(Vec3(-0.5, 1.5, 0.5))), 0.99);
   EXPECT_LE(overlap_depth(b, unit_cube_at(Vec3(0.5, 0.5, 0.5))), 1e-12);

@@ -141,7 +141,7 @@ TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
   bag.closed = true;
   bag.spacing = 0.005;
   bag.stiffness = 2e4;
-  bag.mass_per_length = 0.5;
+  bag.areal_mass = 0.5;
   bag.velocity = Vec3(0.0, -1.0, 0.0);
   MembraneParams line = bag;
   line.name = "line";
@@ -184,7 +184,7 @@ TEST(MpmCheckpoint, RunWithTriangleMembraneResumesBitForBit) {
   p.fixed = MembraneFixed::Edges;
   p.spacing = 0.01;
   p.stiffness = 2e4;
-  p.mass_per_length = 0.5;
+  p.areal_mass = 0.5;
   p.poisson_ratio = 0.3;
   sc.membranes = {p};
   check_membranes_resume<3>(sc, 150, "3d");

@@ -25,7 +25,7 @@ MembraneParams strip(MembraneModel model, double angle_deg, double length = 1.0)
   p.points = {c - 0.5 * length * t, c + 0.5 * length * t};
   p.spacing = 0.5 * kH;
   p.stiffness = kJ;
-  p.mass_per_length = kMu;
+  p.areal_mass = kMu;
   return p;
 }
 

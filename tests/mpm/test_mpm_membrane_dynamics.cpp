@@ -58,7 +58,7 @@ MembraneParams line(MembraneModel model, const V2& a, const V2& b, double h, dou
   p.points = {Vec3(a.x(), a.y(), 0.0), Vec3(b.x(), b.y(), 0.0)};
   p.spacing = 0.5 * h;
   p.stiffness = kJ;
-  p.mass_per_length = mu;
+  p.areal_mass = mu;
   p.fixed = MembraneFixed::First;
   return p;
 }
@@ -273,7 +273,7 @@ TEST(MpmMembraneDynamics, HangingCableTakesTheCatenaryShape) {
   p.points = {Vec3(0.2, 1.0, 0.0), Vec3(1.2, 1.0, 0.0)};
   p.spacing = 0.025;
   p.stiffness = 1e4;
-  p.mass_per_length = mu;
+  p.areal_mass = mu;
   p.fixed = MembraneFixed::Both;
   p.slack = length / span - 1.0;
   sc.membranes = {p};

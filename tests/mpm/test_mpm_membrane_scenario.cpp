@@ -49,9 +49,9 @@ TEST(MpmMembraneScenario, ParsesRoundTripsAndBuilds) {
   EXPECT_EQ(m.model, mpm::MembraneModel::York);
   EXPECT_TRUE(m.closed);
   EXPECT_EQ(m.points.size(), 4u);
-  EXPECT_NEAR(m.stiffness, 2e6, 1e-6);         // J = E t
-  EXPECT_NEAR(m.mass_per_length, 1.0, 1e-15);  // rho t
-  EXPECT_NEAR(m.spacing, 0.05, 1e-15);         // default: half a cell
+  EXPECT_NEAR(m.stiffness, 2e6, 1e-6);    // J = E t
+  EXPECT_NEAR(m.areal_mass, 1.0, 1e-15);  // rho t
+  EXPECT_NEAR(m.spacing, 0.05, 1e-15);    // default: half a cell
   EXPECT_FALSE(m.slack_everywhere);
   const std::string resolved = mpm_scenario_to_toml(sc);
   const auto again = parse_mpm_scenario(load_scenario_text(resolved, "r.toml"));
@@ -68,6 +68,8 @@ TEST(MpmMembraneScenario, BadInputNamesFileLineAndKey) {
   expect_error(edit(kBase, "youngs_modulus = 1e9", "stiffness = 1e6\nyoungs_modulus = 1e9"),
                "'youngs_modulus'");
   expect_error(edit(kBase, "thickness = 2e-3\n", ""), "'thickness'");
+  expect_error(edit(kBase, "thickness = 2e-3", "thickness = 2e-3\nmass_per_length = 1"),
+               "'mass_per_length': was renamed areal_mass");
   expect_error(edit(kBase, "[1.05, 0.45]", "[2.05, 0.45]"), "outside the [grid]");
   expect_error(edit(kBase, "[1.05, 0.45], [1.05, 1.05], [0.45, 1.05]", "[1.05, 0.45]"),
                "at least 3 points");
@@ -80,7 +82,7 @@ TEST(MpmMembraneScenario, BadInputNamesFileLineAndKey) {
   expect_error(edit(kBase, "[[membranes]]\nname = \"bag\"",
                     "[[membranes]]\nname = \"bag\"\n"
                     "model = \"fe\"\nstiffness = 1\n"
-                    "mass_per_length = 1\npoints = "
+                    "areal_mass = 1\npoints = "
                     "[[0.1, 0.1], [0.2, 0.1]]\n"
                     "[[membranes]]\nname = \"bag\""),
                "membrane 'bag' is defined twice");
@@ -118,7 +120,7 @@ shape = "sheet"
 points = [[0.2, 0.2, 1.5], [1.8, 0.2, 1.5], [1.8, 1.8, 1.6], [0.2, 1.8, 1.6]]
 fixed = "edges"
 stiffness = 1e4
-mass_per_length = 0.5
+areal_mass = 0.5
 poisson_ratio = 0.2
 [[membranes]]
 name = "bag"
@@ -135,7 +137,7 @@ shape = "sphere"
 centre = [1.5, 1.5, 0.5]
 radius = 0.3
 stiffness = 1e4
-mass_per_length = 0.5
+areal_mass = 0.5
 )";
 
 TEST(MpmMembraneScenario, ThreeDimensionalSurfacesParseRoundTripAndBuild) {

@@ -40,7 +40,7 @@ MembraneParams tilted_sheet(double poisson) {
   p.points = {kCentre - a - b, kCentre + a - b, kCentre + a + b, kCentre - a + b};
   p.spacing = 0.5 * kH;
   p.stiffness = kJ;
-  p.mass_per_length = kMu;
+  p.areal_mass = kMu;
   p.poisson_ratio = poisson;
   return p;
 }

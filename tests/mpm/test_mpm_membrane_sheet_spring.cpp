@@ -57,7 +57,7 @@ Solver<3> hanging_block() {
               Vec3(0.1, 0.125, 1.475)};
   p.spacing = 0.5 * kH;
   p.stiffness = kJ;
-  p.mass_per_length = kMu;
+  p.areal_mass = kMu;
   sc.membranes = {p};
   Solver<3> s = build_mpm<3>(sc);
   auto& mb = s.membranes[0];

@@ -167,8 +167,8 @@ motion = { hinge = [0.5, 0.4, 0.5] }
   // through the hinge (0.5, 0.4) turned 20 deg: at the block's corner x = 0.6
   // it is at y = 0.4 + 0.1 tan 20 = 0.436, so a block from y = 0.45 clears
   // it and one from y = 0.42 does not.
-  EXPECT_NO_THROW(parse_mpm_scenario(load_scenario_text(
-      edit(text, "min = [0.4, 0.5, 0.4]", "min = [0.4, 0.45, 0.4]"), "t.toml")));
+  EXPECT_NO_THROW(parse_mpm_scenario(
+      load_scenario_text(edit(text, "min = [0.4, 0.5, 0.4]", "min = [0.4, 0.45, 0.4]"), "t.toml")));
   expect_error(edit(text, "min = [0.4, 0.5, 0.4]", "min = [0.4, 0.42, 0.4]"),
                "'box': expected a rigid body clear of the material: it overlaps [[bodies]] #1");
   auto thin = ok.rigid_bodies[0];

@@ -178,8 +178,8 @@ void check_clear_of_bodies(TomlReader& r, const mpm::MpmScenario& s, const DemCo
                                                    mpm::rigid_rotation<3>(b), b.motion.hinge);
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const auto& body = s.bodies[i];
-    const auto material = geometry::OrientedBox::turned(
-        flat(body.min, -1.0), flat(body.max, 1.0), Eigen::Matrix3d::Identity(), Vec3::Zero());
+    const auto material = geometry::OrientedBox::turned(flat(body.min, -1.0), flat(body.max, 1.0),
+                                                        Eigen::Matrix3d::Identity(), Vec3::Zero());
     const double depth = geometry::overlap_depth(rigid, material);
     if (depth > 1e-9)
       r.fail("box", fmt::format("expected a rigid body clear of the material: it overlaps "

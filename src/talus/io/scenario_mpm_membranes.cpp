@@ -21,8 +21,11 @@ const EnumNames<mpm::MembraneShape> kMembraneShapes = {{"polyline", mpm::Membran
                                                        {"sphere", mpm::MembraneShape::Sphere}};
 
 // J from `stiffness`, or from `youngs_modulus` times `thickness`; mu from
-// `mass_per_length`, or from `density` times `thickness`.
+// `areal_mass`, or from `density` times `thickness`.
 void read_stiffness_and_mass(TomlReader& r, mpm::MembraneParams& m) {
+  // The key's old name said "per length" for what is a mass per area.
+  r.reject({"mass_per_length"},
+           "was renamed areal_mass (kg/m^2; in 2D per m of line and m of depth)");
   const bool by_modulus = r.has("youngs_modulus");
   if (by_modulus && r.has("stiffness"))
     r.fail("youngs_modulus", "give either stiffness (J, N/m) or youngs_modulus with thickness");
@@ -31,13 +34,13 @@ void read_stiffness_and_mass(TomlReader& r, mpm::MembraneParams& m) {
   if (!needs_thickness)
     r.reject({"thickness"},
              "is only used with youngs_modulus or density (else give stiffness "
-             "and mass_per_length)");
+             "and areal_mass)");
   m.stiffness = by_modulus ? required_number_in(r, "youngs_modulus", positive()) * thickness
                            : required_number_in(r, "stiffness", positive());
-  if (r.has("density") && r.has("mass_per_length"))
-    r.fail("density", "give either mass_per_length (kg/m^2) or density with thickness");
-  m.mass_per_length = r.has("density") ? required_number_in(r, "density", positive()) * thickness
-                                       : required_number_in(r, "mass_per_length", positive());
+  if (r.has("density") && r.has("areal_mass"))
+    r.fail("density", "give either areal_mass (kg/m^2) or density with thickness");
+  m.areal_mass = r.has("density") ? required_number_in(r, "density", positive()) * thickness
+                                  : required_number_in(r, "areal_mass", positive());
 }
 
 void check_inside_grid(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx,
@@ -186,7 +189,7 @@ nlohmann::ordered_json mpm_membrane_table(const mpm::MembraneParams& m, int dime
   }
   t["spacing"] = m.spacing;
   t["stiffness"] = m.stiffness;
-  t["mass_per_length"] = m.mass_per_length;
+  t["areal_mass"] = m.areal_mass;
   if (dimension == 3) t["poisson_ratio"] = m.poisson_ratio;
   if (dimension == 2 || m.shape == mpm::MembraneShape::Sheet)
     t["fixed"] = name_of(kMembraneEnds, m.fixed);

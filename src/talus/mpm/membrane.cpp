@@ -109,9 +109,9 @@ void Membrane<D>::update_york_strain(double dt) {
 
 template <int D>
 double Membrane<D>::wave_speed() const {
-  if (!(mass_per_length > 0.0)) return 0.0;
+  if (!(areal_mass > 0.0)) return 0.0;
   const double nu2 = surface() ? poisson_ratio * poisson_ratio : 0.0;
-  return std::sqrt(stiffness / ((1.0 - nu2) * mass_per_length));
+  return std::sqrt(stiffness / ((1.0 - nu2) * areal_mass));
 }
 
 template <int D>
@@ -145,7 +145,7 @@ Membrane<D> build_membrane(const MembraneParams& p, double cell_size) {
   m.model = p.model;
   m.closed = p.closed;
   m.stiffness = p.stiffness;
-  m.mass_per_length = p.mass_per_length;
+  m.areal_mass = p.areal_mass;
   const double spacing = p.spacing > 0.0 ? p.spacing : 0.5 * cell_size;
   std::vector<Vec> corners;
   for (const Vec3& c : p.points) corners.push_back(Space<D>::from3(c));
@@ -186,7 +186,7 @@ Membrane<D> build_membrane(const MembraneParams& p, double cell_size) {
     m.fixed.front() = 1;
   if (!p.closed && (p.fixed == MembraneFixed::Last || p.fixed == MembraneFixed::Both))
     m.fixed.back() = 1;
-  for (std::size_t i = 0; i < n; ++i) m.mass.push_back(p.mass_per_length * half_sum(rest, i));
+  for (std::size_t i = 0; i < n; ++i) m.mass.push_back(p.areal_mass * half_sum(rest, i));
   if (p.model == MembraneModel::FiniteElement) {
     m.rest_length = rest;
     return m;

@@ -13,10 +13,10 @@
 //    mapped to the grid. In 3D the FE membrane is a surface of 3-node
 //    tension-only triangles instead (membrane_triangle.hpp): a sheet, or a
 //    closed box or sphere surface (a bag), meshed by membrane_surface.cpp.
-// In 2D everything is per metre of depth: J in N/m, mass per length in kg/m
-// per m (kg/m^2), tension T in N/m. In 3D J is in N/m, the mass per area in
-// kg/m^2 (mass_per_length holds it) and T is per unit width, N/m. York's
-// model is 2D only.
+// In 2D everything is per metre of depth: J in N/m, the mass in kg per m of
+// line per m of depth (kg/m^2, areal_mass), tension T in N/m. In 3D J is in
+// N/m, the mass per area in kg/m^2 (areal_mass) and T is per unit width, N/m.
+// York's model is 2D only.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -50,9 +50,9 @@ struct MembraneParams {
   double radius = 0.0;
   double poisson_ratio = 0.0;  // of the 3D triangles
   bool closed = false;
-  double spacing = 0.0;          // m along the polyline; <= 0: half a cell
-  double stiffness = 0.0;        // J = E t, N/m
-  double mass_per_length = 0.0;  // kg per m of membrane (per m of depth in 2D)
+  double spacing = 0.0;     // m along the polyline; <= 0: half a cell
+  double stiffness = 0.0;   // J = E t, N/m
+  double areal_mass = 0.0;  // kg/m^2 (2D: per m of line and m of depth)
   MembraneFixed fixed = MembraneFixed::None;
   // Slack (folds, Hamad's "extra material at the bag bottom"): the rest length
   // of the cables whose midpoints lie in the box is (1 + slack) times their
@@ -72,9 +72,9 @@ struct Membrane {
   std::string name;
   MembraneModel model = MembraneModel::FiniteElement;
   bool closed = false;
-  double stiffness = 0.0;        // J, N/m
-  double mass_per_length = 0.0;  // mu, kg/m (3D surfaces: kg/m^2)
-  double poisson_ratio = 0.0;    // 3D surfaces
+  double stiffness = 0.0;      // J, N/m
+  double areal_mass = 0.0;     // mu, kg/m^2 (2D: per m of line and m of depth)
+  double poisson_ratio = 0.0;  // 3D surfaces
 
   // Nodes (FE) or material points (York).
   std::vector<Vec> x, v;
@@ -117,7 +117,7 @@ struct Membrane {
 };
 
 // Nodes (FE) or points (York) of a membrane: the polyline resampled to the
-// spacing, rest lengths with the slack, masses from mass_per_length; in 3D
+// spacing, rest lengths with the slack, masses from areal_mass; in 3D
 // the meshed surface (build_surface_membrane). Throws InputError for a
 // polyline of zero length or a spacing that leaves an edge without a node.
 template <int D>

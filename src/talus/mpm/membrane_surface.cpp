@@ -143,7 +143,7 @@ Membrane<3> build_surface_membrane(const MembraneParams& p, double cell_size) {
   m.model = p.model;
   m.closed = p.shape != MembraneShape::Sheet;
   m.stiffness = p.stiffness;
-  m.mass_per_length = p.mass_per_length;
+  m.areal_mass = p.areal_mass;
   m.poisson_ratio = p.poisson_ratio;
   m.x = mesh.x;
   m.triangles = mesh.triangles;
@@ -165,7 +165,7 @@ Membrane<3> build_surface_membrane(const MembraneParams& p, double cell_size) {
     m.rest_inverse.push_back(rest.inverse);
     m.rest_area.push_back(rest.area);
     // A third of each triangle's mass to each of its nodes.
-    for (uint32_t i : t) m.mass[i] += p.mass_per_length * rest.area / 3.0;
+    for (uint32_t i : t) m.mass[i] += p.areal_mass * rest.area / 3.0;
   }
   return m;
 }
