@@ -347,8 +347,9 @@ int validate_command(const ValidateOptions& opt) {
       const auto s = mpm::build_mpm<3>(sc);
       n = s.particles.size(), dt = s.time_step();
     }
-    fmt::print("{}: valid ({}D MPM, {} points, {} materials, first time step {:.3g} s)\n", opt.file,
-               sc.dimension, n, sc.materials.size(), dt);
+    fmt::print("{}: valid ({}D MPM, {} points, {} material{}, first time step {:.3g} s)\n",
+               opt.file, sc.dimension, n, sc.materials.size(), sc.materials.size() == 1 ? "" : "s",
+               dt);
     return 0;
   }
   const auto sc = io::parse_dem_scenario(file);
