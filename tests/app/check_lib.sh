@@ -15,6 +15,17 @@ check_rc() {  # name [output file]
   local output=${2:-$tmp/py}
   check "$1" '[ $rc -eq 0 ] || { cat "$output"; false; }'
 }
+# Waits until a run started in the background writes its first checkpoint (or
+# ends), then a little longer so that it is inside its next stretch. No fixed
+# count of polls: under a sanitizer on a loaded host the first checkpoint
+# came after more than the 10 s such a loop used to allow.
+wait_for_checkpoint() {  # output folder, pid of the run
+  local deadline=$((SECONDS + 900))
+  while [ ! -f "$1/checkpoint.bin" ] && kill -0 "$2" 2>/dev/null && [ $SECONDS -lt $deadline ]; do
+    sleep 0.01
+  done
+  sleep 0.2
+}
 # Last line of a script: the tally, and its exit status.
 finish() {  # name of the script's part
   echo "$1: $pass passed, $fail failed"

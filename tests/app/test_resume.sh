@@ -10,11 +10,7 @@ args=(run "$src/scenarios/column_collapse.toml" --quiet
 "$talus" "${args[@]}" --out "$tmp/full" || { echo "FAIL: uninterrupted run"; exit 1; }
 
 "$talus" "${args[@]}" --out "$tmp/killed" & pid=$!
-for _ in $(seq 1 600); do
-  [ -f "$tmp/killed/checkpoint.bin" ] && break
-  sleep 0.02
-done
-sleep 0.3
+wait_for_checkpoint "$tmp/killed" $pid
 if ! kill -0 $pid 2>/dev/null; then
   echo "FAIL: the run finished before it could be killed; make it longer"; exit 1
 fi

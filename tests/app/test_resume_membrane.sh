@@ -15,11 +15,7 @@ resume_case() {
   local args=("$@")
   "$talus" "${args[@]}" --out "$tmp/$name-full" || { echo "FAIL: $name: uninterrupted run"; fail=$((fail+1)); return; }
   "$talus" "${args[@]}" --out "$tmp/$name-killed" & local pid=$!
-  for _ in $(seq 1 3000); do
-    [ -f "$tmp/$name-killed/checkpoint.bin" ] && break
-    sleep 0.01
-  done
-  sleep 0.2
+  wait_for_checkpoint "$tmp/$name-killed" $pid
   if ! kill -0 $pid 2>/dev/null; then
     echo "FAIL: $name: the run finished before it could be killed; make it longer"
     fail=$((fail+1)); return

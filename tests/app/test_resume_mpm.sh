@@ -10,11 +10,7 @@ scenario=$src/tests/data/scenarios/mpm_resume.toml
 "$talus" run "$scenario" --quiet -j 1 --out "$tmp/full" || { echo "FAIL: uninterrupted run"; exit 1; }
 
 "$talus" run "$scenario" --quiet -j 1 --out "$tmp/killed" & pid=$!
-for _ in $(seq 1 1000); do
-  [ -f "$tmp/killed/checkpoint.bin" ] && break
-  sleep 0.01
-done
-sleep 0.2
+wait_for_checkpoint "$tmp/killed" $pid
 check "the run is still going when it is killed (else make it longer)" 'kill -0 $pid 2>/dev/null'
 kill -9 $pid; wait $pid 2>/dev/null
 check "a checkpoint was written" '[ -f "$tmp/killed/checkpoint.bin" ]'

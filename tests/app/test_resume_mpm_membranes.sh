@@ -11,11 +11,7 @@ resume_case() {  # scenario name
   local scenario=$src/tests/data/scenarios/$1.toml out=$tmp/$1
   "$talus" run "$scenario" --quiet -j 1 --out "$out/full" || { echo "FAIL: $1 uninterrupted"; fail=$((fail+1)); return; }
   "$talus" run "$scenario" --quiet -j 1 --out "$out/killed" & pid=$!
-  for _ in $(seq 1 1000); do
-    [ -f "$out/killed/checkpoint.bin" ] && break
-    sleep 0.01
-  done
-  sleep 0.2
+  wait_for_checkpoint "$out/killed" $pid
   check "$1: the run is still going when it is killed (else make it longer)" 'kill -0 $pid 2>/dev/null'
   kill -9 $pid; wait $pid 2>/dev/null
   check "$1: the killed run had not finished" '[ ! -f "$out/killed/summary.json" ]'
