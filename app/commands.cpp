@@ -13,6 +13,7 @@
 #include "summary.hpp"
 #include "talus/analysis/dam_break.hpp"
 #include "talus/analysis/flume_observer.hpp"
+#include "talus/analysis/gripper.hpp"
 #include "talus/analysis/hollow_sphere.hpp"
 #include "talus/analysis/triaxial.hpp"
 #include "talus/core/error.hpp"
@@ -102,6 +103,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   }
   std::unique_ptr<analysis::TriaxialObserver> triaxial;
   std::unique_ptr<analysis::HollowSphereObserver> hollow;
+  std::unique_ptr<analysis::GripperObserver> gripper;
   if constexpr (D == 3) {
     if (sc.triaxial) {
       triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system, resume,
@@ -114,6 +116,10 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       hollow = std::make_unique<analysis::HollowSphereObserver>(out, sc, run->system, resume,
                                                                 run->system.time);
       observers.insert(observers.begin(), hollow.get());  // flushed before the checkpoint
+    }
+    if (sc.gripper) {
+      gripper = std::make_unique<analysis::GripperObserver>(out, sc, run->system);
+      observers.insert(observers.begin(), gripper.get());
     }
   }
   try {
@@ -129,6 +135,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
     }
     if (triaxial) summary.analysis["triaxial"] = triaxial->finish();
     if (hollow) summary.analysis["hollow_sphere"] = hollow->finish();
+    if (gripper) summary.analysis["gripper"] = gripper->finish();
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());

@@ -9,6 +9,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/dem/membrane/from_spec.hpp"
+#include "talus/dem/membrane/gripper.hpp"
 #include "talus/dem/packing.hpp"
 
 namespace talus::dem {
@@ -179,6 +180,7 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
           m, material_of(sc, m.material, "[[membranes]] '" + m.name + "'")));
       membrane::attach_rings(s.membranes.back(), m, s.walls);
     }
+    if (sc.gripper) membrane::apply_gripper(*sc.gripper, sc, s);
   } else if (!sc.membranes.empty()) {
     throw InputError("[[membranes]]: membranes need run.dimension = 3");
   }

@@ -276,6 +276,31 @@ struct HollowSphereParams {
   double poisson_ratio = 0.0;
 };
 
+// The granular gripper (spec/membranes-and-jamming.md, Götz 2024 §4.2): a
+// geodesic hemisphere `membrane` (opening up, rim fixed) is held with its free
+// particles at hold_stretch x its radius while the grains fall in; at
+// `release` they are let go and every rest length is cut by `pretension`.
+// The object, a rigid sphere (DrivenSphere) of object_radius, waits at
+// object_center until push_start, then rises at push_speed until its top is
+// `depth` above the hemisphere's lowest point (centre.z - radius); after
+// `relax` the vacuum (the membrane's pressure -vacuum) rises in vacuum_steps
+// equal steps of vacuum_step_time each (a linear rise over the first half of
+// each step, then held); after `hold` more the object moves down at
+// pull_speed until the end of the run. The io reader checks the keys and
+// derives the phase times below.
+struct GripperParams {
+  std::string membrane, object_material;
+  double hold_stretch = 1.25, release = 0.0, pretension = 0.125;
+  double object_radius = 0.0;
+  Vec3 object_center = Vec3::Zero();
+  double push_start = 0.0, push_speed = 0.0, depth = 0.0, relax = 0.0;
+  double vacuum = 0.0;  // Pa, > 0
+  int vacuum_steps = 1;
+  double vacuum_step_time = 0.0, hold = 0.0, pull_speed = 0.0;
+  // Derived: end of the push, start and end of the vacuum, start of the pull.
+  double push_end = 0.0, vacuum_start = 0.0, vacuum_end = 0.0, pull_start = 0.0;
+};
+
 struct DemScenario {
   std::string name;
   std::string description;
@@ -290,6 +315,7 @@ struct DemScenario {
   std::optional<DamBreakParams> dam_break;
   std::optional<TriaxialParams> triaxial;
   std::optional<HollowSphereParams> hollow_sphere;
+  std::optional<GripperParams> gripper;
 };
 
 }  // namespace talus::dem

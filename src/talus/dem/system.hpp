@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "talus/dem/membrane/body.hpp"
+#include "talus/dem/membrane/driven_sphere.hpp"
 #include "talus/dem/neighbour_list.hpp"
 #include "talus/dem/params.hpp"
 #include "talus/dem/particles.hpp"
@@ -22,6 +23,9 @@ struct DemSystem {
   std::vector<MaterialParams> materials;
   ContactParams contact;
   std::vector<membrane::MembraneBody> membranes;  // 3D only
+  // Rigid spheres on prescribed paths that touch the membranes (the gripper's
+  // object); 3D runs with membranes only.
+  std::vector<membrane::DrivenSphere> objects;
 
   Vec gravity = Vec::Zero();
   double dt = 0.0;

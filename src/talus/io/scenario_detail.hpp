@@ -139,6 +139,10 @@ nlohmann::ordered_json triaxial_table(const dem::TriaxialParams& t);
 // under the same vacuum; and its table for the resolved scenario.
 void read_hollow_sphere(TomlReader& r, dem::DemScenario& s);
 nlohmann::ordered_json hollow_sphere_table(const dem::HollowSphereParams& h);
+// [gripper] (after membranes, materials and output): fills s.gripper with
+// its phase times; and its table for the resolved scenario.
+void read_gripper(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);
+nlohmann::ordered_json gripper_table(const dem::GripperParams& g);
 // Pieces of [[particles]] that [flume.release] shares.
 // box_min/box_max of a source from its polygon.
 void set_polygon_bounds(dem::ParticleSourceParams& s);

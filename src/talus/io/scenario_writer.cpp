@@ -305,6 +305,7 @@ Json scenario_table(const dem::DemScenario& s) {
   }
   if (s.triaxial) doc["triaxial"] = detail::triaxial_table(*s.triaxial);
   if (s.hollow_sphere) doc["hollow_sphere"] = detail::hollow_sphere_table(*s.hollow_sphere);
+  if (s.gripper) doc["gripper"] = detail::gripper_table(*s.gripper);
   doc["output"] = Writer::output(s.output);
   return doc;
 }

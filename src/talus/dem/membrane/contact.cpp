@@ -271,6 +271,23 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
       lane);
 }
 
+GrainForce rigid_sphere_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                               std::span<const Vec3> v_mem, std::span<const double> mass,
+                               std::span<Vec3> f_mem, int64_t sphere_id, const Grain& g,
+                               std::span<const TriangleContact> contacts,
+                               const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                               ContactMemory& memory) {
+  auto m_point = [&](const TriangleContact& c) {
+    const auto& tri = mesh.triangles[c.triangle];
+    double inv = 0.0;
+    for (int k = 0; k < 3; ++k) inv += c.w[k] * c.w[k] / mass[tri[k]];
+    return 1.0 / inv;
+  };
+  return contact_forces(
+      mesh, x_mem, v_mem, [&](int k, const Vec3& r) { f_mem[k] += r; }, m_point, sphere_id, g,
+      contacts, coeffs, dt, memory, 0);
+}
+
 int particle_triangle_forces(const Mesh& mesh, std::span<const Vec3> x, std::span<const Vec3> v,
                              std::span<const double> mass, std::span<Vec3> f, int particle,
                              double radius, std::span<const TriangleContact> contacts,

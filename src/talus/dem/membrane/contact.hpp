@@ -147,6 +147,17 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  const ViscoelasticHertz::Coeffs& coeffs, double dt,
                                  ContactMemory& memory, int lane);
 
+// A sphere of prescribed motion (driven_sphere.hpp) against the selected
+// triangles: the grain-membrane law with m_eff the mass of the contact point
+// alone, 1 / sum_k w_k^2 / m_k (the sphere does not yield, as if infinitely
+// heavy). The reactions -w_k F go into f_mem; the force on the sphere is returned.
+GrainForce rigid_sphere_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
+                               std::span<const Vec3> v_mem, std::span<const double> mass,
+                               std::span<Vec3> f_mem, int64_t sphere_id, const Grain& g,
+                               std::span<const TriangleContact> contacts,
+                               const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                               ContactMemory& memory);
+
 // A particle of the membrane itself (self_contact.hpp) against the selected
 // triangles: the same law, with the particle as a sphere of `radius` that does
 // not rotate, and m_eff the reduced mass of the particle and the contact point

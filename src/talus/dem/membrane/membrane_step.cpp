@@ -111,6 +111,13 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
   contacts_.assign(n, 0);
   double r_max = 0.0;
   for (double r : p.r) r_max = std::max(r_max, r);
+  for (auto& mb : s.membranes) release_if_due(mb, s.time);
+  for (auto& o : s.objects) {
+    o.x = position_at(o, s.time);
+    o.v = velocity_at(o, s.time);
+    o.force.setZero();
+    o.contacts = 0;
+  }
   for (int k = 0; k < num_membranes(); ++k) {
     auto& mb = s.membranes[k];
     auto& m = mb.body;
@@ -129,8 +136,11 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     // with the radius d: the cell must suit that too when there are no
     // grains (r_max = 0 would make it tiny).
     const double self_radius = self_contact_radius(m);
-    grids_[k].build(m.mesh, m.x,
-                    mb.self_contact ? std::max(2.0 * r_max, 2.0 * self_radius) : 2.0 * r_max);
+    double cell = mb.self_contact ? std::max(2.0 * r_max, 2.0 * self_radius) : 2.0 * r_max;
+    // Without grains a driven sphere still needs cells of some size.
+    for (const auto& o : s.objects)
+      if (!(cell > 0)) cell = o.radius;
+    grids_[k].build(m.mesh, m.x, cell);
     if (mb.self_contact) {
       mb.self_memory.begin_step(1);
       mb.self_contacts =
@@ -150,9 +160,27 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
       for (const auto& [v, f] : L.reactions) m.f[v] += f;
       mb.contacts += L.contacts;
     }
+    object_contacts(s, k);
     mb.reaction.setZero();
     for (std::size_t i = 0; i < m.x.size(); ++i)
       if (m.fixed[i]) mb.reaction -= m.f[i] + m.mass[i] * s.gravity;
+  }
+}
+
+void MembraneStep::object_contacts(DemSystem<3>& s, int k) {
+  auto& m = s.membranes[k].body;
+  Lane& L = lanes_[0];
+  for (auto& o : s.objects) {
+    auto& memory = o.memory[k];
+    memory.begin_step(1);
+    if (s.time < o.active_from) continue;
+    grids_[k].query(o.x, o.radius, L.candidates, L.scratch);
+    if (L.candidates.empty()) continue;
+    select_contacts(m.mesh, m.x, o.x, o.radius, L.candidates, L.selected, L.touched);
+    const GrainForce gf =
+        driven_sphere_forces(o, m, L.selected, coeffs(o.material, k), s.dt, memory);
+    o.force += gf.force;
+    o.contacts += gf.contacts;
   }
 }
 
@@ -178,6 +206,11 @@ double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const do
       best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(static_cast<int>(a), k),
                                                                   me, r_min[a], v_ref));
     }
+    // A driven sphere yields nothing: the membrane particle's mass alone.
+    if (mv < 1e300)
+      for (const auto& o : s.objects)
+        best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(o.material, k), mv,
+                                                                    o.radius, v_ref));
     // Two particles of mass mv: the least reduced mass a self-contact can
     // have (the contact point's mass is at least mv).
     if (s.membranes[k].self_contact && mv < 1e300)

@@ -52,7 +52,8 @@ class MembraneStep {
   // for none) with the lightest free membrane particle, and for a membrane
   // with self-contact that of two of its lightest free particles (radius
   // self_contact_radius); the stepper divides it by the same packing factor
-  // as the grains' contacts.
+  // as the grains' contacts. A driven sphere against a membrane adds the
+  // contact of the sphere with the lightest free particle alone.
   double internal_time_step(const DemSystem<3>& s) const;
   double contact_time_step(const DemSystem<3>& s, std::span<const double> m_min,
                            std::span<const double> r_min, double v_ref) const;
@@ -64,6 +65,9 @@ class MembraneStep {
   }
   int num_membranes() const { return static_cast<int>(grids_.size()); }
 
+  // The driven spheres (DemSystem::objects) against membrane k, after the
+  // grains' lanes, on the calling thread.
+  void object_contacts(DemSystem<3>& s, int k);
   // Grains [begin, end) against membrane k in lane `lane`.
   void contact_lane(DemSystem<3>& s, int k, int lane, std::size_t begin, std::size_t end,
                     const Vec3& lo, const Vec3& hi);
