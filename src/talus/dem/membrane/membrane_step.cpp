@@ -138,8 +138,7 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
     const double self_radius = self_contact_radius(m);
     double cell = mb.self_contact ? std::max(2.0 * r_max, 2.0 * self_radius) : 2.0 * r_max;
     // Without grains a driven sphere still needs cells of some size.
-    for (const auto& o : s.objects)
-      if (!(cell > 0)) cell = o.radius;
+    if (!(cell > 0) && !s.objects.empty()) cell = s.objects.front().radius;
     grids_[k].build(m.mesh, m.x, cell);
     if (mb.self_contact) {
       mb.self_memory.begin_step(1);
