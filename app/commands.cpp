@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "summary.hpp"
+#include "talus/analysis/beam.hpp"
 #include "talus/analysis/dam_break.hpp"
 #include "talus/analysis/flume_observer.hpp"
 #include "talus/analysis/gripper.hpp"
@@ -104,6 +105,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   std::unique_ptr<analysis::TriaxialObserver> triaxial;
   std::unique_ptr<analysis::HollowSphereObserver> hollow;
   std::unique_ptr<analysis::GripperObserver> gripper;
+  std::unique_ptr<analysis::BeamObserver> beam;
   if constexpr (D == 3) {
     if (sc.triaxial) {
       triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system, resume,
@@ -121,6 +123,10 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       gripper = std::make_unique<analysis::GripperObserver>(out, sc, run->system);
       observers.insert(observers.begin(), gripper.get());
     }
+    if (sc.beam) {
+      beam = std::make_unique<analysis::BeamObserver>(out, sc, run->system);
+      observers.insert(observers.begin(), beam.get());
+    }
   }
   try {
     const auto stats = dem::run_dem<D>(*run, control, observers, !resume);
@@ -136,6 +142,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
     if (triaxial) summary.analysis["triaxial"] = triaxial->finish();
     if (hollow) summary.analysis["hollow_sphere"] = hollow->finish();
     if (gripper) summary.analysis["gripper"] = gripper->finish();
+    if (beam) summary.analysis["beam"] = beam->finish();
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());

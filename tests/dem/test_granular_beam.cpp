@@ -2,8 +2,8 @@
 // in seconds: a rounded-box membrane (3 x 3 x 6 cm instead of 8 x 8 x 40 cm)
 // filled by growth with the source's grains (R 2.5-2.9 mm, E 100 MPa), no
 // gravity, 90 kPa of vacuum ramped in. It must stay closed (every grain inside
-// the membrane) and come to rest. scenarios/granular_beam_3pt.toml is the full
-// size; the source's mould and the bending itself are not modelled yet.
+// the membrane) and come to rest. Here the beam is free (no mould, no [beam]
+// rig); the bending test with the mould is tests/dem/test_beam_run.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "talus/core/error.hpp"
+#include "talus/dem/membrane/beam_rig.hpp"
 #include "talus/dem/membrane/from_spec.hpp"
 #include "talus/dem/membrane/gripper.hpp"
 #include "talus/dem/packing.hpp"
@@ -181,6 +182,7 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
       membrane::attach_rings(s.membranes.back(), m, s.walls);
     }
     if (sc.gripper) membrane::apply_gripper(*sc.gripper, sc, s);
+    if (sc.beam) membrane::apply_beam(*sc.beam, sc, s);
   } else if (!sc.membranes.empty()) {
     throw InputError("[[membranes]]: membranes need run.dimension = 3");
   }

@@ -73,6 +73,9 @@ void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
   // checkpoints of [gripper] runs; this guards other callers).
   if (!s.objects.empty())
     throw InputError("checkpoints of runs with a driven object ([gripper]) are not supported");
+  // Nor the beam rig's mould faces and pinned supports.
+  for (const auto& m : s.membranes)
+    if (m.rig) throw InputError("checkpoints of [beam] runs are not supported");
   io::ArchiveWriter w;
   w.put(kMagic);
   w.put(kVersion);

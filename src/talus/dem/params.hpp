@@ -301,6 +301,40 @@ struct GripperParams {
   double push_end = 0.0, vacuum_start = 0.0, vacuum_end = 0.0, pull_start = 0.0;
 };
 
+// The granular beam in 3-point bending (spec/membranes-and-jamming.md, Götz
+// 2024 §5.2) on a closed box `membrane` whose long axis is x and whose vacuum
+// is its own pressure ramp. Until mould_end a box mould holds the membrane:
+// each face closes in with the membrane (it sits on the outermost particle
+// and never moves back out), so the beam keeps its box shape while the vacuum
+// compacts it. At bending_start the supports are pinned: the bottom-face
+// particles (lowest z of the rest mesh) within support_length of either end
+// of the box. Then the load: step 0 holds F = 0, steps 1..n raise F by
+// load_step each up to max_load = n load_step, steps n+1..2n lower it back to
+// 0; each step lasts step_time, its change ramped in linearly over load_ramp.
+// The force acts along -z, shared equally by the top-face particles within
+// load_length/2 of the beam's centre (x); the deflection is the mean z of the
+// bottom-face particles within measure_length/2 of it, averaged over the last
+// half of each step. beam_poisson_ratio is the beam's ν_b of the Timoshenko
+// fit (analysis/beam.hpp), which the source leaves open. damping (1/s) slows
+// every grain and membrane particle by dv/dt = -damping v from mould_end on,
+// so that the beam comes to rest within a step: its own contact damping lets
+// the bending mode (~20 Hz at full size) ring for many steps. At rest it
+// exerts no force, so the deflection it settles to is the undamped one.
+struct BeamParams {
+  std::string membrane;
+  double mould_end = 0.0, bending_start = 0.0;
+  double support_length = 0.0, load_length = 0.0, measure_length = 0.0;
+  double max_load = 0.0, load_step = 0.0, step_time = 0.0, load_ramp = 0.0;
+  double beam_poisson_ratio = 0.0;
+  double damping = 0.0;
+  int load_steps = 0;  // derived: n = max_load / load_step
+  // Total load at time t (N, along -z; 0 before the first step and after the last).
+  double load_at(double t) const;
+  // Which load step t falls in (0 .. 2 n), -1 before bending_start, 2n + 1 after.
+  int step_at(double t) const;
+  double end() const { return bending_start + (2 * load_steps + 1) * step_time; }
+};
+
 struct DemScenario {
   std::string name;
   std::string description;
@@ -316,6 +350,7 @@ struct DemScenario {
   std::optional<TriaxialParams> triaxial;
   std::optional<HollowSphereParams> hollow_sphere;
   std::optional<GripperParams> gripper;
+  std::optional<BeamParams> beam;
 };
 
 }  // namespace talus::dem

@@ -25,9 +25,9 @@ using detail::required_number_in;
 
 const EnumNames<int> kMethods = {{"dem", 0}, {"runout", 1}, {"mpm", 2}, {"compare", 3}};
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method",    "name",     "description", "run",           "contact",
-    "materials", "flume",    "dam_break",   "walls",         "particles",
-    "membranes", "triaxial", "output",      "hollow_sphere", "gripper"};
+    "method", "name",          "description", "run",       "contact",   "materials",
+    "flume",  "dam_break",     "walls",       "particles", "membranes", "triaxial",
+    "output", "hollow_sphere", "gripper",     "beam"};
 
 dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   dem::RunParams run;
@@ -262,6 +262,7 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   TomlReader output = table_or_empty(root, "output", empty);
   s.output = read_output(output);
   if (auto gr = root.optional_table("gripper")) detail::read_gripper(*gr, s, ctx);
+  if (auto bm = root.optional_table("beam")) detail::read_beam(*bm, s);
   root.finish();
   return s;
 }

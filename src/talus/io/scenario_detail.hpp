@@ -143,6 +143,10 @@ nlohmann::ordered_json hollow_sphere_table(const dem::HollowSphereParams& h);
 // its phase times; and its table for the resolved scenario.
 void read_gripper(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);
 nlohmann::ordered_json gripper_table(const dem::GripperParams& g);
+// [beam] (after membranes, run and output): fills s.beam with its step count;
+// and its table for the resolved scenario.
+void read_beam(TomlReader& r, dem::DemScenario& s);
+nlohmann::ordered_json beam_table(const dem::BeamParams& b);
 // Pieces of [[particles]] that [flume.release] shares.
 // box_min/box_max of a source from its polygon.
 void set_polygon_bounds(dem::ParticleSourceParams& s);

@@ -306,6 +306,7 @@ Json scenario_table(const dem::DemScenario& s) {
   if (s.triaxial) doc["triaxial"] = detail::triaxial_table(*s.triaxial);
   if (s.hollow_sphere) doc["hollow_sphere"] = detail::hollow_sphere_table(*s.hollow_sphere);
   if (s.gripper) doc["gripper"] = detail::gripper_table(*s.gripper);
+  if (s.beam) doc["beam"] = detail::beam_table(*s.beam);
   doc["output"] = Writer::output(s.output);
   return doc;
 }

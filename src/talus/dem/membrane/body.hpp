@@ -1,8 +1,10 @@
 #pragma once
 // A membrane as part of a DEM run: the mass-spring membrane, the material its
 // contacts with grains use, their friction springs, and what the outputs report.
+#include <optional>
 #include <string>
 
+#include "talus/dem/membrane/beam_rig.hpp"
 #include "talus/dem/membrane/contact.hpp"
 #include "talus/dem/membrane/forces.hpp"
 #include "talus/dem/params.hpp"
@@ -51,6 +53,8 @@ struct MembraneBody {
   bool self_contact = false;
   ContactMemory self_memory;  // their friction springs, keyed by membrane particle
   int self_contacts = 0;      // in the last force pass
+  // The granular beam's mould, supports and load ([beam] runs only).
+  std::optional<BeamRig> rig;
 };
 
 double pressure_at(const MembraneBody& m, double t);

@@ -1,0 +1,156 @@
+#include "talus/analysis/beam.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/core/error.hpp"
+
+namespace talus::analysis {
+
+BeamFit fit_three_point(std::span<const double> load, std::span<const double> deflection,
+                        double span, double width, double height, double poisson_ratio) {
+  const std::size_t n = load.size();
+  if (n < 2 || deflection.size() != n)
+    throw InputError("beam fit: needs two or more (load, deflection) pairs");
+  double mf = 0, md = 0;
+  for (std::size_t i = 0; i < n; ++i) mf += load[i], md += deflection[i];
+  mf /= n;
+  md /= n;
+  double sff = 0, sfd = 0, sdd = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sff += (load[i] - mf) * (load[i] - mf);
+    sfd += (load[i] - mf) * (deflection[i] - md);
+    sdd += (deflection[i] - md) * (deflection[i] - md);
+  }
+  if (!(sff > 0)) throw InputError("beam fit: all loads are equal");
+  BeamFit fit;
+  fit.slope = sfd / sff;
+  fit.intercept = md - fit.slope * mf;
+  fit.r2 = sdd > 0 ? sfd * sfd / (sff * sdd) : 1.0;
+  if (!(fit.slope > 0))
+    throw InputError(fmt::format(
+        "beam fit: the deflection does not grow with the load (slope {} m/N)", fit.slope));
+  const double inertia = width * height * height * height / 12.0, area = width * height;
+  const double compliance =
+      span * span * span / (48.0 * inertia) + 3.0 * span * (1.0 + poisson_ratio) / (5.0 * area);
+  fit.youngs_modulus = compliance / fit.slope;
+  fit.effective_modulus = fit.youngs_modulus / (1.0 - poisson_ratio * poisson_ratio);
+  return fit;
+}
+
+BeamObserver::BeamObserver(std::filesystem::path out, const dem::DemScenario& sc,
+                           const dem::DemSystem<3>& s)
+    : out_(std::move(out)) {
+  if (!sc.beam) throw InputError("[beam]: missing");
+  b_ = *sc.beam;
+  for (std::size_t k = 0; k < s.membranes.size(); ++k)
+    if (s.membranes[k].rig) membrane_ = static_cast<int>(k);
+  if (membrane_ < 0) throw InputError("[beam]: no membrane carries the rig");
+  steps_.resize(2 * b_.load_steps + 1);
+  std::filesystem::create_directories(out_);
+  csv_ = std::make_unique<io::CsvSeries>(
+      out_ / "beam.csv",
+      std::vector<std::string>{"time", "step", "load", "bottom_centre_z", "support_reaction_z",
+                               "kinetic_energy"},
+      false);
+}
+
+void BeamObserver::on_series(const dem::DemRun<3>& run) {
+  const auto& s = run.system;
+  const auto& mb = s.membranes[membrane_];
+  const auto& rig = *mb.rig;
+  const auto& x = mb.body.x;
+  double z = 0.0;
+  for (int i : rig.measured) z += x[i].z();
+  z /= static_cast<double>(rig.measured.size());
+  const int k = b_.step_at(s.time);
+  if (k >= 0 && !measured_) {
+    measured_ = true;
+    double lsum = 0, rsum = 0;
+    int ln = 0, rn = 0;
+    const double cx = 0.5 * (rig.mould_lo.x() + rig.mould_hi.x());
+    for (int i : rig.supports) {
+      if (x[i].x() < cx) {
+        lsum += x[i].x();
+        ++ln;
+      } else {
+        rsum += x[i].x();
+        ++rn;
+      }
+    }
+    span_ = rsum / rn - lsum / ln;
+    auto mean = [&](const std::vector<int>& set, int axis) {
+      double sum = 0.0;
+      for (int i : set) sum += x[i][axis];
+      return sum / static_cast<double>(set.size());
+    };
+    width_ = mean(rig.faces[1], 1) - mean(rig.faces[0], 1);
+    height_ = mean(rig.faces[3], 2) - mean(rig.faces[2], 2);
+  }
+  if (k >= 0 && k < static_cast<int>(steps_.size()) &&
+      s.time - b_.bending_start - k * b_.step_time >= 0.5 * b_.step_time) {
+    auto& m = steps_[k];
+    ++m.rows;
+    m.z += z;
+    m.reaction += mb.reaction.z();
+  }
+  const double ke = dem::kinetic_energy(s.particles) + dem::membrane::kinetic_energy(mb);
+  csv_->row({s.time, static_cast<double>(k), b_.load_at(s.time), z, mb.reaction.z(), ke});
+}
+
+nlohmann::json BeamObserver::finish() const {
+  csv_->flush();
+  nlohmann::json j;
+  j["mould_end"] = b_.mould_end;
+  j["bending_start"] = b_.bending_start;
+  j["span"] = span_;
+  j["width"] = width_;
+  j["height"] = height_;
+  const int n = b_.load_steps;
+  auto load_of = [&](int k) { return b_.load_step * (k <= n ? k : 2 * n - k); };
+  // Only complete steps count: a run cut short (or a step without a series
+  // row in its second half) leaves the table at the last complete one.
+  int done = 0;
+  while (done < static_cast<int>(steps_.size()) && steps_[done].rows > 0) ++done;
+  j["steps_done"] = done;
+  if (done == 0) return j;
+  const double z0 = steps_[0].z / steps_[0].rows;
+  std::vector<double> loads, deflections;
+  io::CsvSeries table(out_ / "beam_steps.csv",
+                      {"step", "load", "bottom_centre_z", "deflection", "support_reaction_z"},
+                      false);
+  for (int k = 0; k < done; ++k) {
+    const double zk = steps_[k].z / steps_[k].rows, rk = steps_[k].reaction / steps_[k].rows;
+    table.row({static_cast<double>(k), load_of(k), zk, z0 - zk, rk});
+    loads.push_back(load_of(k));
+    deflections.push_back(z0 - zk);
+  }
+  table.flush();
+  j["load"] = loads;
+  j["deflection"] = deflections;
+  if (done > n) {
+    j["deflection_at_max_load"] = deflections[n];
+    try {
+      const BeamFit fit =
+          fit_three_point(std::span(loads).first(n + 1), std::span(deflections).first(n + 1), span_,
+                          width_, height_, b_.beam_poisson_ratio);
+      j["slope_m_per_N"] = fit.slope;
+      j["intercept_m"] = fit.intercept;
+      j["r2"] = fit.r2;
+      j["youngs_modulus"] = fit.youngs_modulus;
+      j["effective_modulus"] = fit.effective_modulus;
+    } catch (const InputError& e) {
+      j["fit_error"] = e.what();  // the run's outputs stay; the summary says why
+    }
+  }
+  // Loading and unloading at the same load: step k and 2n - k.
+  double gap = 0.0;
+  for (int k = n + 1; k < done; ++k)
+    gap = std::max(gap, std::abs(deflections[k] - deflections[2 * n - k]));
+  if (done > n + 1) j["largest_hysteresis_gap"] = gap;
+  return j;
+}
+
+}  // namespace talus::analysis

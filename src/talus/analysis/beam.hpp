@@ -1,0 +1,66 @@
+#pragma once
+// The granular beam in 3-point bending (Götz 2024 §5.2, spec/membranes-and-
+// jamming.md, dem::BeamParams): the deflection at each load step and the
+// beam's modulus from Timoshenko's formula (spec; source eq. 36)
+//   Δz = F L³ / (48 E_b I) + 3 F L (1 + ν_b) / (5 E_b A),  E_b,eff = E_b / (1 - ν_b²),
+// with I = b h³ / 12 and A = b h of the beam's cross-section.
+//
+// The observer records, at each series time, into <out>/beam.csv:
+//   time, step (-1 before bending_start), load (N, along -z), the mean z of the
+//   measured bottom-centre particles, the supports' reaction z, and the kinetic
+//   energy of grains and membrane.
+// At the end, <out>/beam_steps.csv holds per step: step, load, mean z and
+// deflection (z at step 0 minus z; > 0 downwards) over the last half of the
+// step, and the mean support reaction there.
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <vector>
+
+#include "talus/dem/driver.hpp"
+#include "talus/io/csv_writer.hpp"
+
+namespace talus::analysis {
+
+struct BeamFit {
+  double slope = 0.0;      // dΔz/dF by least squares (with intercept), m/N
+  double intercept = 0.0;  // m
+  double r2 = 0.0;         // coefficient of determination of the line
+  double youngs_modulus = 0.0, effective_modulus = 0.0;  // E_b, E_b,eff (Pa)
+};
+
+// The line through (load, deflection) and E_b from its slope for span L,
+// width b, height h and ν_b. Throws InputError for fewer than 2 points, no
+// spread in load or a slope that is not positive.
+BeamFit fit_three_point(std::span<const double> load, std::span<const double> deflection,
+                        double span, double width, double height, double poisson_ratio);
+
+class BeamObserver final : public dem::DemObserver<3> {
+ public:
+  // Throws InputError when the scenario has no [beam] or no membrane has the rig.
+  BeamObserver(std::filesystem::path out, const dem::DemScenario& sc, const dem::DemSystem<3>& s);
+  void on_series(const dem::DemRun<3>& run) override;
+  // The steps' table and the fit (loading branch), the span and section
+  // measured when the supports were pinned, the largest gap between the
+  // loading and unloading branches; writes beam_steps.csv.
+  nlohmann::json finish() const;
+
+ private:
+  std::filesystem::path out_;
+  dem::BeamParams b_;
+  int membrane_ = -1;
+  std::unique_ptr<io::CsvSeries> csv_;
+  struct StepMean {
+    int rows = 0;
+    double z = 0.0, reaction = 0.0;
+  };
+  std::vector<StepMean> steps_;
+  // At the first row from bending_start on: span between the supports'
+  // centroids, width (y) and height (z) between the membrane's opposite flat
+  // faces (their mean positions: the rounded edges stand out further).
+  bool measured_ = false;
+  double span_ = 0.0, width_ = 0.0, height_ = 0.0;
+};
+
+}  // namespace talus::analysis

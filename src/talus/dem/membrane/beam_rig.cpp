@@ -1,0 +1,120 @@
+#include "talus/dem/membrane/beam_rig.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "talus/core/error.hpp"
+#include "talus/dem/system.hpp"
+
+namespace talus::dem {
+
+int BeamParams::step_at(double t) const {
+  if (t < bending_start) return -1;
+  return std::min(2 * load_steps + 1, static_cast<int>((t - bending_start) / step_time));
+}
+
+double BeamParams::load_at(double t) const {
+  const int k = step_at(t);
+  if (k <= 0 || k > 2 * load_steps) return 0.0;
+  auto target = [&](int j) { return load_step * (j <= load_steps ? j : 2 * load_steps - j); };
+  const double u = load_ramp > 0 ? (t - bending_start - k * step_time) / load_ramp : 1.0;
+  return target(k - 1) + (target(k) - target(k - 1)) * std::clamp(u, 0.0, 1.0);
+}
+
+}  // namespace talus::dem
+
+namespace talus::dem::membrane {
+
+void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
+  auto spec = std::find_if(sc.membranes.begin(), sc.membranes.end(),
+                           [&](const MembraneSpec& m) { return m.name == b.membrane; });
+  auto body = std::find_if(s.membranes.begin(), s.membranes.end(),
+                           [&](const MembraneBody& m) { return m.name == b.membrane; });
+  if (spec == sc.membranes.end() || body == s.membranes.end())
+    throw InputError(fmt::format("[beam]: no membrane named '{}'", b.membrane));
+  const auto& x = body->body.x;
+  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+  for (const Vec3& p : x) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  // The flat faces of the rounded box lie on its outer box up to round-off.
+  const double tol = 1e-6 * (hi - lo).maxCoeff();
+  const double cx = 0.5 * (lo.x() + hi.x());
+  BeamRig rig;
+  rig.params = b;
+  rig.mould_lo = lo;
+  rig.mould_hi = hi;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const bool bottom = x[i].z() <= lo.z() + tol, top = x[i].z() >= hi.z() - tol;
+    const double off = std::abs(x[i].x() - cx);
+    const int id = static_cast<int>(i);
+    if (bottom && off >= 0.5 * (hi.x() - lo.x()) - b.support_length) rig.supports.push_back(id);
+    if (top && off <= 0.5 * b.load_length) rig.loaded.push_back(id);
+    if (bottom && off <= 0.5 * b.measure_length) rig.measured.push_back(id);
+    if (x[i].y() <= lo.y() + tol) rig.faces[0].push_back(id);
+    if (x[i].y() >= hi.y() - tol) rig.faces[1].push_back(id);
+    if (bottom) rig.faces[2].push_back(id);
+    if (top) rig.faces[3].push_back(id);
+  }
+  auto need = [&](const std::vector<int>& set, const char* key, const char* face) {
+    if (set.empty())
+      throw InputError(
+          fmt::format("[beam] '{}': no membrane particle of '{}' on its {} face "
+                      "within it (membrane spacing {} m)",
+                      key, b.membrane, face, spec->spacing));
+  };
+  need(rig.supports, "support_length", "flat bottom");
+  need(rig.loaded, "load_length", "flat top");
+  need(rig.measured, "measure_length", "flat bottom");
+  // Both ends must carry the beam, or it is a cantilever.
+  const auto left =
+      std::count_if(rig.supports.begin(), rig.supports.end(), [&](int i) { return x[i].x() < cx; });
+  if (left == 0 || left == static_cast<std::ptrdiff_t>(rig.supports.size()))
+    throw InputError("[beam] 'support_length': supports at one end only");
+  body->rig = std::move(rig);
+}
+
+void hold_in_mould(BeamRig& rig, Membrane& m, double t) {
+  if (t >= rig.params.mould_end) return;
+  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+  for (std::size_t i = 0; i < m.x.size(); ++i) {
+    if (!m.fixed[i]) {
+      for (int a = 0; a < 3; ++a) {
+        if (m.x[i][a] > rig.mould_hi[a]) {
+          m.x[i][a] = rig.mould_hi[a];
+          m.v[i][a] = std::min(m.v[i][a], 0.0);
+        } else if (m.x[i][a] < rig.mould_lo[a]) {
+          m.x[i][a] = rig.mould_lo[a];
+          m.v[i][a] = std::max(m.v[i][a], 0.0);
+        }
+      }
+    }
+    lo = lo.cwiseMin(m.x[i]);
+    hi = hi.cwiseMax(m.x[i]);
+  }
+  rig.mould_lo = rig.mould_lo.cwiseMax(lo);
+  rig.mould_hi = rig.mould_hi.cwiseMin(hi);
+}
+
+void pin_supports_if_due(BeamRig& rig, Membrane& m, double t) {
+  if (rig.supported || t < rig.params.bending_start) return;
+  rig.supported = true;
+  for (int i : rig.supports) {
+    m.fixed[i] = 1;
+    m.v[i].setZero();
+  }
+}
+
+double damping_factor(const BeamRig& rig, double t, double dt) {
+  if (!(rig.params.damping > 0) || t < rig.params.mould_end) return 1.0;
+  return std::exp(-rig.params.damping * dt);
+}
+
+void add_load(const BeamRig& rig, Membrane& m, double t) {
+  const double f = rig.params.load_at(t);
+  if (f == 0.0) return;
+  const double share = f / static_cast<double>(rig.loaded.size());
+  for (int i : rig.loaded) m.f[i].z() -= share;
+}
+
+}  // namespace talus::dem::membrane
