@@ -8,12 +8,14 @@ E_eff = E / (1 - nu^2) for grains (nu_p = 0.245) and membrane (nu_m = 1/3); the 
 found alpha = 0.29, beta = 0.41, gamma = 0.36.
 
 Usage: beam_sweep.py TALUS SCENARIO OUT_DIR --ep 5e6,2e7,1e8 --em 1e7,1e8,1e9
-                     --p 3e4,6e4,9e4 [-j N] [--set key=value ...]
+                     --p 3e4,6e4,9e4 [-j N] [--plot OUT.png] [--set key=value ...]
 
 Runs every (E_p, E_m, p) of SCENARIO (a [beam] scenario: materials 0 the grains, 1 the
 membrane's contact material, membrane 0 the beam) with one thread each, N at a time, then
 fits (alpha, beta, gamma) by least squares on the logarithms. Prints one line per run,
-the fit and its root-mean-square residual, and writes OUT_DIR/sweep.csv.
+the fit and its root-mean-square residual, and writes OUT_DIR/sweep.csv; --plot draws
+E_b,eff/E_p,eff against the source's law and against the fitted one (as the source's
+Abb. 21). Runs already finished in OUT_DIR (a summary.json there) are read, not rerun.
 """
 import argparse
 import concurrent.futures
@@ -40,7 +42,8 @@ def run_one(a, ep, em, p):
     cmd = [a.talus, "run", a.scenario, "--out", out, "--force", "--quiet", "--threads", "1"]
     for s in sets:
         cmd += ["--set", s]
-    subprocess.run(cmd, check=True)
+    if not os.path.exists(os.path.join(out, "summary.json")):
+        subprocess.run(cmd, check=True)
     b = json.load(open(os.path.join(out, "summary.json")))["beam"]
     return {"E_p": ep, "E_m": em, "p": p, "E_b": b.get("youngs_modulus", float("nan")),
             "E_b_eff": b.get("effective_modulus", float("nan")), "r2": b.get("r2", float("nan")),
@@ -57,6 +60,7 @@ def main():
     ap.add_argument("--em", type=floats, required=True)
     ap.add_argument("--p", type=floats, required=True)
     ap.add_argument("-j", type=int, default=1)
+    ap.add_argument("--plot")
     ap.add_argument("--set", action="append", default=[])
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -87,6 +91,30 @@ def main():
     print(f"fit: alpha = {coef[0]:.3f}, beta = {coef[1]:.3f}, gamma = {coef[2]:.3f} "
           f"(source 0.29, 0.41, 0.36); rms residual of ln(E_b,eff/E_p,eff): fit {np.sqrt(np.mean(res**2)):.3f}, "
           f"source law {np.sqrt(np.mean(src**2)):.3f}")
+    if a.plot:
+        plot(a.plot, A, y, coef)
+
+
+def plot(out, A, y, coef):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    for ax, c, label in ((axes[0], np.array([0.29, 0.41, 0.36]), "source"),
+                         (axes[1], coef, "fitted here")):
+        x = A @ c
+        ax.scatter(np.exp(x), np.exp(y), s=14)
+        lim = [np.exp(min(x.min(), y.min())) * 0.8, np.exp(max(x.max(), y.max())) * 1.25]
+        ax.plot(lim, lim, "k-", lw=0.8)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(rf"$e^{{{c[0]:.2f}}}(E_m^{{eff}}/E_p^{{eff}})^{{{c[1]:.2f}}}"
+                      rf"(p/E_p^{{eff}})^{{{c[2]:.2f}}}$ ({label})")
+        ax.set_ylabel(r"$E_b^{eff}/E_p^{eff}$ (runs)")
+        ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    print(out)
 
 
 if __name__ == "__main__":

@@ -48,6 +48,8 @@ BeamObserver::BeamObserver(std::filesystem::path out, const dem::DemScenario& sc
   for (std::size_t k = 0; k < s.membranes.size(); ++k)
     if (s.membranes[k].rig) membrane_ = static_cast<int>(k);
   if (membrane_ < 0) throw InputError("[beam]: no membrane carries the rig");
+  for (const auto& m : sc.membranes)
+    if (m.name == b_.membrane) nominal_ = Vec3(m.size_x, m.size_y, m.size_z);
   steps_.resize(2 * b_.load_steps + 1);
   std::filesystem::create_directories(out_);
   csv_ = std::make_unique<io::CsvSeries>(
@@ -141,6 +143,13 @@ nlohmann::json BeamObserver::finish() const {
       j["r2"] = fit.r2;
       j["youngs_modulus"] = fit.youngs_modulus;
       j["effective_modulus"] = fit.effective_modulus;
+      // Same line, the rest geometry: the modulus a reader of the source compares.
+      const BeamFit rest =
+          fit_three_point(std::span(loads).first(n + 1), std::span(deflections).first(n + 1),
+                          nominal_.x(), nominal_.y(), nominal_.z(), b_.beam_poisson_ratio);
+      j["nominal_size"] = {nominal_.x(), nominal_.y(), nominal_.z()};
+      j["youngs_modulus_nominal"] = rest.youngs_modulus;
+      j["effective_modulus_nominal"] = rest.effective_modulus;
     } catch (const InputError& e) {
       j["fit_error"] = e.what();  // the run's outputs stay; the summary says why
     }

@@ -41,9 +41,10 @@ class BeamObserver final : public dem::DemObserver<3> {
   // Throws InputError when the scenario has no [beam] or no membrane has the rig.
   BeamObserver(std::filesystem::path out, const dem::DemScenario& sc, const dem::DemSystem<3>& s);
   void on_series(const dem::DemRun<3>& run) override;
-  // The steps' table and the fit (loading branch), the span and section
-  // measured when the supports were pinned, the largest gap between the
-  // loading and unloading branches; writes beam_steps.csv.
+  // The steps' table and the fit (loading branch) with the span and section
+  // measured when the supports were pinned and with the membrane's rest size,
+  // the largest gap between the loading and unloading branches; writes
+  // beam_steps.csv.
   nlohmann::json finish() const;
 
  private:
@@ -61,6 +62,9 @@ class BeamObserver final : public dem::DemObserver<3> {
   // faces (their mean positions: the rounded edges stand out further).
   bool measured_ = false;
   double span_ = 0.0, width_ = 0.0, height_ = 0.0;
+  // The membrane's rest size (length, width, height): the source's L_b, b, h
+  // of 40 x 8 x 8 cm, for the fit with the nominal geometry beside the measured.
+  Vec3 nominal_ = Vec3::Zero();
 };
 
 }  // namespace talus::analysis
