@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <ostream>
+#include <sstream>
 #include <string>
 
 #include "talus/core/error.hpp"
@@ -30,6 +31,14 @@ inline int marked_line(const std::string& text) {
     if (text[i] == '\n') ++line;
   }
   return 0;
+}
+
+// The text of a bundled scenario (scenarios/NAME).
+inline std::string bundled(const std::string& name) {
+  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/scenarios/" + name);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline std::string write_temp(const std::string& name, const std::string& text) {

@@ -3,9 +3,6 @@
 // InputError naming file, line ("# <-") and key.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
@@ -13,17 +10,11 @@
 namespace talus::io {
 namespace {
 
-std::string bundled(const char* name) {
-  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/scenarios/" + name);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using cases::BadCase;
+using cases::bundled;
+using cases::edit;
 
 const std::string kSmall = bundled("granular_beam_3pt_small.toml");
-
-using cases::BadCase;
-using cases::edit;
 
 void expect_small(const dem::DemScenario& s) {
   ASSERT_TRUE(s.beam.has_value());

@@ -3,9 +3,6 @@
 // trip; bad values give an InputError naming file, line ("# <-") and key.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
@@ -13,17 +10,11 @@
 namespace talus::io {
 namespace {
 
-std::string bundled(const char* name) {
-  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/scenarios/" + name);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using cases::BadCase;
+using cases::bundled;
+using cases::edit;
 
 const std::string kSmall = bundled("granular_gripper_small.toml");
-
-using cases::BadCase;
-using cases::edit;
 
 // The small case: the object's top starts at -22 mm and ends the push 14 mm
 // above the rest bottom (-20 mm), 16 mm at 0.1 m/s from 0.17 s.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
+#include "talus/dem/membrane/from_spec.hpp"
 #include "talus/dem/system.hpp"
 
 namespace talus::dem {
@@ -28,13 +29,8 @@ double BeamParams::load_at(double t) const {
 namespace talus::dem::membrane {
 
 void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
-  auto spec = std::find_if(sc.membranes.begin(), sc.membranes.end(),
-                           [&](const MembraneSpec& m) { return m.name == b.membrane; });
-  auto body = std::find_if(s.membranes.begin(), s.membranes.end(),
-                           [&](const MembraneBody& m) { return m.name == b.membrane; });
-  if (spec == sc.membranes.end() || body == s.membranes.end())
-    throw InputError(fmt::format("[beam]: no membrane named '{}'", b.membrane));
-  const auto& x = body->body.x;
+  auto [spec, body] = named_membrane(sc.membranes, s.membranes, b.membrane, "[beam]");
+  const auto& x = body.body.x;
   Vec3 lo = Vec3::Constant(1e300), hi = -lo;
   for (const Vec3& p : x) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   // The flat faces of the rounded box lie on its outer box up to round-off.
@@ -61,7 +57,7 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
       throw InputError(
           fmt::format("[beam] '{}': no membrane particle of '{}' on its {} face "
                       "within it (membrane spacing {} m)",
-                      key, b.membrane, face, spec->spacing));
+                      key, b.membrane, face, spec.spacing));
   };
   need(rig.supports, "support_length", "flat bottom");
   need(rig.loaded, "load_length", "flat top");
@@ -71,7 +67,7 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
       std::count_if(rig.supports.begin(), rig.supports.end(), [&](int i) { return x[i].x() < cx; });
   if (left == 0 || left == static_cast<std::ptrdiff_t>(rig.supports.size()))
     throw InputError("[beam] 'support_length': supports at one end only");
-  body->rig = std::move(rig);
+  body.rig = std::move(rig);
 }
 
 void hold_in_mould(BeamRig& rig, Membrane& m, double t) {

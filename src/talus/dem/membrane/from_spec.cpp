@@ -137,4 +137,16 @@ void attach_rings(MembraneBody& b, const MembraneSpec& s,
   }
 }
 
+NamedMembrane named_membrane(const std::vector<MembraneSpec>& specs,
+                             std::vector<MembraneBody>& bodies, const std::string& name,
+                             const std::string& section) {
+  auto spec = std::find_if(specs.begin(), specs.end(),
+                           [&](const MembraneSpec& m) { return m.name == name; });
+  auto body = std::find_if(bodies.begin(), bodies.end(),
+                           [&](const MembraneBody& m) { return m.name == name; });
+  if (spec == specs.end() || body == bodies.end())
+    throw InputError(fmt::format("{}: no membrane named '{}'", section, name));
+  return {*spec, *body};
+}
+
 }  // namespace talus::dem::membrane

@@ -18,4 +18,15 @@ MembraneBody make_membrane_body(const MembraneSpec& spec, int material);
 void attach_rings(MembraneBody& body, const MembraneSpec& spec,
                   const std::vector<geometry::Wall>& walls);
 
+// The spec and the built body of the membrane `name` (the protocols' set-up
+// after the builder made the membranes). Throws InputError naming `section`
+// when either is missing.
+struct NamedMembrane {
+  const MembraneSpec& spec;
+  MembraneBody& body;
+};
+NamedMembrane named_membrane(const std::vector<MembraneSpec>& specs,
+                             std::vector<MembraneBody>& bodies, const std::string& name,
+                             const std::string& section);
+
 }  // namespace talus::dem::membrane

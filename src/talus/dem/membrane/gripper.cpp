@@ -5,28 +5,24 @@
 #include <algorithm>
 
 #include "talus/core/error.hpp"
+#include "talus/dem/membrane/from_spec.hpp"
 
 namespace talus::dem::membrane {
 
 void apply_gripper(const GripperParams& g, const DemScenario& sc, DemSystem<3>& s) {
-  auto spec = std::find_if(sc.membranes.begin(), sc.membranes.end(),
-                           [&](const MembraneSpec& m) { return m.name == g.membrane; });
-  auto body = std::find_if(s.membranes.begin(), s.membranes.end(),
-                           [&](const MembraneBody& m) { return m.name == g.membrane; });
-  if (spec == sc.membranes.end() || body == s.membranes.end())
-    throw InputError(fmt::format("[gripper]: no membrane named '{}'", g.membrane));
+  auto [spec, body] = named_membrane(sc.membranes, s.membranes, g.membrane, "[gripper]");
   const int material = s.material_index(g.object_material);
   if (material < 0)
     throw InputError(fmt::format("[gripper]: no material named '{}'", g.object_material));
 
   // Filling: the free particles wait on the larger sphere, pinned (the source
   // holds them there "to fit more grains in"); the rim stays where it is.
-  MembraneBody& mb = *body;
+  MembraneBody& mb = body;
   auto& m = mb.body;
   mb.held.assign(m.x.size(), 0);
   for (std::size_t i = 0; i < m.x.size(); ++i) {
     if (m.fixed[i]) continue;
-    m.x[i] = spec->origin + g.hold_stretch * (m.x[i] - spec->origin);
+    m.x[i] = spec.origin + g.hold_stretch * (m.x[i] - spec.origin);
     mb.held[i] = 1;
     m.fixed[i] = 1;
   }
