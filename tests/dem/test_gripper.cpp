@@ -10,6 +10,7 @@
 #include "talus/dem/contact/pair_coefficients.hpp"
 #include "talus/dem/membrane/from_spec.hpp"
 #include "talus/dem/membrane/gripper.hpp"
+#include "talus/dem/output_observer.hpp"
 #include "talus/dem/system.hpp"
 
 namespace talus::dem {
@@ -227,3 +228,31 @@ TEST(GripperSetup, VacuumRisesInSteps) {
 
 }  // namespace
 }  // namespace talus::dem
+
+namespace talus::dem::membrane {
+namespace {
+
+// The snapshots draw the object with the walls: a closed sphere of triangles
+// on its surface, numbered after the walls.
+TEST(DrivenSphere, DrawnWithTheWallsInSnapshots) {
+  DemSystem<3> s;
+  DrivenSphere o;
+  o.radius = 0.01;
+  o.x = Vec3(0.1, -0.2, 0.3);
+  s.objects.push_back(o);
+  const io::WallFrame f = wall_frame(s, 1.0);
+  ASSERT_EQ(f.triangles.size(), 224u);  // 4 n (n - 1), n = 8
+  for (const Vec3& p : f.points) EXPECT_NEAR((p - o.x).norm(), o.radius, 1e-15);
+  for (int w : f.triangle_wall) EXPECT_EQ(w, 0);
+  // Closed and facing outwards: the signed volume is that of the inscribed
+  // polyhedron, a little below 4/3 pi r^3.
+  double volume = 0.0;
+  for (const auto& t : f.triangles)
+    volume += (f.points[t[0]] - o.x).dot((f.points[t[1]] - o.x).cross(f.points[t[2]] - o.x)) / 6;
+  const double ball = 4.0 / 3.0 * M_PI * std::pow(o.radius, 3);
+  EXPECT_LT(volume, ball);
+  EXPECT_GT(volume, 0.9 * ball);
+}
+
+}  // namespace
+}  // namespace talus::dem::membrane

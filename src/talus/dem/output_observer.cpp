@@ -57,6 +57,20 @@ Vec3 any_perpendicular(const Vec3& n) {
   return n.cross(t).normalized();
 }
 
+// A sphere of 4 n (n - 1) triangles (n bands of latitude, 2 n of longitude).
+void add_sphere(io::WallFrame& f, const Vec3& c, double r, int wall, int n = 8) {
+  auto at = [&](int i, int j) {
+    const double th = M_PI * i / n, ph = M_PI * j / n;
+    return Vec3(c +
+                r * Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)));
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < 2 * n; ++j) {
+      if (i > 0) add_triangle(f, at(i, j), at(i + 1, j), at(i, j + 1), wall);
+      if (i < n - 1) add_triangle(f, at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), wall);
+    }
+}
+
 }  // namespace
 
 io::MeshFrame membrane_frame(const membrane::MembraneBody& m) {
@@ -125,6 +139,9 @@ io::WallFrame wall_frame(const DemSystem<D>& s, double extent) {
       }
     }
   }
+  // The driven spheres (the gripper's object), numbered after the walls.
+  for (std::size_t o = 0; o < s.objects.size(); ++o)
+    add_sphere(f, s.objects[o].x, s.objects[o].radius, static_cast<int>(s.walls.size() + o));
   return f;
 }
 

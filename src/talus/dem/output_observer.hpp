@@ -48,7 +48,9 @@ class DemOutputs final : public DemObserver<D> {
 };
 
 // Wall geometry as drawable lines and triangles at time t (planes as squares of
-// side `extent` around their point, arcs and cylinders as polylines/strips).
+// side `extent` around their point, arcs and cylinders as polylines/strips),
+// and the driven spheres (DemSystem::objects) as triangulated spheres whose
+// wall number follows the walls' (walls.size() + k for object k).
 template <int D>
 io::WallFrame wall_frame(const DemSystem<D>& system, double extent);
 
