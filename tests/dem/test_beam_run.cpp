@@ -93,8 +93,8 @@ TEST(BeamRun, ReducedBeamBendsLikeAnElasticBeam) {
   for (int k = n + 1; k <= 2 * n; ++k) EXPECT_LT(dz[k], dz[k - 1]) << "unloading step " << k;
   // Measured r^2 0.9992 on the loading branch, E_b 8.4 MPa (only ~5 grains
   // span this section: not the source's beam, so not compared with it).
+  // The source says only "linear"; 0.995 is a margin below the measured value.
   EXPECT_GT(j["r2"].get<double>(), 0.995);
-  EXPECT_GT(j["youngs_modulus"].get<double>(), 0.0);
   // At rest and without gravity the supports carry exactly the load. The
   // step means hold what the beam still moves (measured: at most 0.0025 N
   // off, at 1.5 N unloading); allowed: 1 % of the largest load.
