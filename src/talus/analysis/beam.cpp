@@ -111,7 +111,6 @@ nlohmann::json BeamObserver::finish() const {
   j["width"] = width_;
   j["height"] = height_;
   const int n = b_.load_steps;
-  auto load_of = [&](int k) { return b_.load_step * (k <= n ? k : 2 * n - k); };
   // Only complete steps count: a run cut short (or a step without a series
   // row in its second half) leaves the table at the last complete one.
   int done = 0;
@@ -125,8 +124,8 @@ nlohmann::json BeamObserver::finish() const {
                       false);
   for (int k = 0; k < done; ++k) {
     const double zk = steps_[k].z / steps_[k].rows, rk = steps_[k].reaction / steps_[k].rows;
-    table.row({static_cast<double>(k), load_of(k), zk, z0 - zk, rk});
-    loads.push_back(load_of(k));
+    table.row({static_cast<double>(k), b_.step_load(k), zk, z0 - zk, rk});
+    loads.push_back(b_.step_load(k));
     deflections.push_back(z0 - zk);
   }
   table.flush();

@@ -328,6 +328,8 @@ struct BeamParams {
   double beam_poisson_ratio = 0.0;
   double damping = 0.0;
   int load_steps = 0;  // derived: n = max_load / load_step
+  // The load that step k (0 .. 2n) holds once ramped in.
+  double step_load(int k) const { return load_step * (k <= load_steps ? k : 2 * load_steps - k); }
   // Total load at time t (N, along -z; 0 before the first step and after the last).
   double load_at(double t) const;
   // Which load step t falls in (0 .. 2 n), -1 before bending_start, 2n + 1 after.

@@ -19,9 +19,8 @@ int BeamParams::step_at(double t) const {
 double BeamParams::load_at(double t) const {
   const int k = step_at(t);
   if (k <= 0 || k > 2 * load_steps) return 0.0;
-  auto target = [&](int j) { return load_step * (j <= load_steps ? j : 2 * load_steps - j); };
   const double u = load_ramp > 0 ? (t - bending_start - k * step_time) / load_ramp : 1.0;
-  return target(k - 1) + (target(k) - target(k - 1)) * std::clamp(u, 0.0, 1.0);
+  return step_load(k - 1) + (step_load(k) - step_load(k - 1)) * std::clamp(u, 0.0, 1.0);
 }
 
 }  // namespace talus::dem
