@@ -12,6 +12,7 @@
 
 #include "summary.hpp"
 #include "talus/analysis/beam.hpp"
+#include "talus/analysis/beam_four_point.hpp"
 #include "talus/analysis/dam_break.hpp"
 #include "talus/analysis/flume_observer.hpp"
 #include "talus/analysis/gripper.hpp"
@@ -106,6 +107,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
   std::unique_ptr<analysis::HollowSphereObserver> hollow;
   std::unique_ptr<analysis::GripperObserver> gripper;
   std::unique_ptr<analysis::BeamObserver> beam;
+  std::unique_ptr<analysis::FourPointObserver> beam4;
   if constexpr (D == 3) {
     if (sc.triaxial) {
       triaxial = std::make_unique<analysis::TriaxialObserver>(out, sc, run->system, resume,
@@ -123,9 +125,12 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
       gripper = std::make_unique<analysis::GripperObserver>(out, sc, run->system);
       observers.insert(observers.begin(), gripper.get());
     }
-    if (sc.beam) {
+    if (sc.beam && sc.beam->test == dem::BeamTest::ThreePoint) {
       beam = std::make_unique<analysis::BeamObserver>(out, sc, run->system);
       observers.insert(observers.begin(), beam.get());
+    } else if (sc.beam) {
+      beam4 = std::make_unique<analysis::FourPointObserver>(out, sc, run->system);
+      observers.insert(observers.begin(), beam4.get());
     }
   }
   try {
@@ -143,6 +148,7 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
     if (hollow) summary.analysis["hollow_sphere"] = hollow->finish();
     if (gripper) summary.analysis["gripper"] = gripper->finish();
     if (beam) summary.analysis["beam"] = beam->finish();
+    if (beam4) summary.analysis["beam"] = beam4->finish();
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "completed", "");
   } catch (const RunError& e) {
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());

@@ -62,6 +62,37 @@ TEST(BeamScenario, LoadScheduleStepsUpAndDown) {
   EXPECT_EQ(b.load_at(0.125), 0.0);
 }
 
+const std::string kFour = bundled("granular_beam_4pt_small.toml");
+
+TEST(BeamScenario, FourPointParsesAndDerivesTheRodsTravel) {
+  for (const auto& text : {kFour, std::string()}) {
+    const auto s = parse_dem_scenario(load_scenario_text(
+        text.empty() ? scenario_to_toml(parse_dem_scenario(load_scenario_text(kFour, "a.toml")))
+                     : text,
+        "b.toml"));
+    ASSERT_TRUE(s.beam.has_value());
+    const auto& b = *s.beam;
+    EXPECT_EQ(b.test, dem::BeamTest::FourPoint);
+    ASSERT_TRUE(b.bending_friction.has_value());
+    EXPECT_DOUBLE_EQ(*b.bending_friction, 0.3);
+    // Source eq. 44 for ε = 0.08 on the 15 cm long, 3 cm high beam.
+    EXPECT_NEAR(b.rod_travel, 0.08 * 23 * 0.15 * 0.15 / (108 * 0.03), 1e-15);
+    EXPECT_DOUBLE_EQ(b.yield_smoothing, 0.002);  // max_strain / 40
+    // 10 mm/s after a 20 ms ramp: half the ramp is lost.
+    EXPECT_NEAR(b.end(), 0.06 + b.rod_travel / 0.01 + 0.01, 1e-12);
+    EXPECT_LE(b.end(), s.run.duration);
+  }
+}
+
+TEST(BeamScenario, RodsRampUpThenMoveSteadilyThenHold) {
+  const auto s = parse_dem_scenario(load_scenario_text(kFour, "b.toml"));
+  const auto& b = *s.beam;
+  EXPECT_EQ(b.rod_travel_at(0.05), 0.0);
+  EXPECT_NEAR(b.rod_travel_at(0.07), 0.5 * 0.01 * 0.01 * 0.01 / 0.02, 1e-15);  // in the ramp
+  EXPECT_NEAR(b.rod_travel_at(0.12), 0.01 * (0.06 - 0.01), 1e-15);
+  EXPECT_DOUBLE_EQ(b.rod_travel_at(b.end() + 0.1), b.rod_travel);
+}
+
 class BadBeam : public testing::TestWithParam<BadCase> {};
 
 TEST_P(BadBeam, InputErrorNamesFileLineAndKey) { cases::expect_input_error(GetParam(), "beam_"); }
@@ -106,7 +137,32 @@ INSTANTIATE_TEST_SUITE_P(
                 edit(edit(kSmall, "snapshot_interval = 0.01",
                           "snapshot_interval = 0.01\ncheckpoint_interval = 0.05"),
                      "membrane = \"beam\"", "membrane = \"beam\" # <-"),
-                "membrane", "checkpoints of [beam] runs are not supported"}),
+                "membrane", "checkpoints of [beam] runs are not supported"},
+        BadCase{"unknown_test", edit(kFour, "test = \"four_point\"", "test = \"five_point\" # <-"),
+                "test", "four_point"},
+        BadCase{"load_steps_in_four_point",
+                edit(kFour, "max_strain = 0.08", "max_strain = 0.08\nmax_load = 2.0 # <-"),
+                "max_load", "not used by test = \"four_point\""},
+        BadCase{"rods_in_three_point",
+                edit(kSmall, "load_ramp = 0.003", "load_ramp = 0.003\nrod_speed = 0.01 # <-"),
+                "rod_speed", "not used by test = \"three_point\""},
+        BadCase{"strain_too_large", edit(kFour, "max_strain = 0.08", "max_strain = 0.8 # <-"),
+                "max_strain", ""},
+        BadCase{"ramp_past_travel", edit(kFour, "rod_ramp = 0.02", "rod_ramp = 5.0 # <-"),
+                "rod_ramp", "ends before the rods' travel"},
+        BadCase{"negative_bending_friction",
+                edit(kFour, "bending_friction = 0.3", "bending_friction = -0.1 # <-"),
+                "bending_friction", ""},
+        BadCase{"no_time_for_rods",
+                edit(edit(kFour, "duration = 1.36", "duration = 0.5"), "rod_speed = 0.01",
+                     "rod_speed = 0.01 # <-"),
+                "rod_speed", "no time for the rods' travel"},
+        BadCase{"damping_ends_before_it_starts",
+                edit(kFour, "damping_end = 0.06", "damping_end = 0.02 # <-"), "damping_end",
+                "after 'mould_end'"},
+        BadCase{"smoothing_too_wide",
+                edit(kFour, "max_strain = 0.08", "max_strain = 0.08\nyield_smoothing = 0.05 # <-"),
+                "yield_smoothing", ""}),
     [](const testing::TestParamInfo<BadCase>& info) { return info.param.name; });
 
 }  // namespace

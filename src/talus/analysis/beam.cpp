@@ -40,6 +40,34 @@ BeamFit fit_three_point(std::span<const double> load, std::span<const double> de
   return fit;
 }
 
+BeamSection measure_section(const dem::membrane::BeamRig& rig, std::span<const Vec3> x) {
+  double lsum = 0, rsum = 0;
+  int ln = 0, rn = 0;
+  const double cx = 0.5 * (rig.mould_lo.x() + rig.mould_hi.x());
+  for (int i : rig.supports) {
+    if (x[i].x() < cx) {
+      lsum += x[i].x();
+      ++ln;
+    } else {
+      rsum += x[i].x();
+      ++rn;
+    }
+  }
+  auto mean = [&](const std::vector<int>& set, int axis) {
+    double sum = 0.0;
+    for (int i : set) sum += x[i][axis];
+    return sum / static_cast<double>(set.size());
+  };
+  return {rsum / rn - lsum / ln, mean(rig.faces[1], 1) - mean(rig.faces[0], 1),
+          mean(rig.faces[3], 2) - mean(rig.faces[2], 2)};
+}
+
+double mean_z(const std::vector<int>& set, std::span<const Vec3> x) {
+  double z = 0.0;
+  for (int i : set) z += x[i].z();
+  return z / static_cast<double>(set.size());
+}
+
 BeamObserver::BeamObserver(std::filesystem::path out, const dem::DemScenario& sc,
                            const dem::DemSystem<3>& s)
     : out_(std::move(out)) {
@@ -63,33 +91,11 @@ void BeamObserver::on_series(const dem::DemRun<3>& run) {
   const auto& s = run.system;
   const auto& mb = s.membranes[membrane_];
   const auto& rig = *mb.rig;
-  const auto& x = mb.body.x;
-  double z = 0.0;
-  for (int i : rig.measured) z += x[i].z();
-  z /= static_cast<double>(rig.measured.size());
+  const double z = mean_z(rig.measured, mb.body.x);
   const int k = b_.step_at(s.time);
   if (k >= 0 && !measured_) {
     measured_ = true;
-    double lsum = 0, rsum = 0;
-    int ln = 0, rn = 0;
-    const double cx = 0.5 * (rig.mould_lo.x() + rig.mould_hi.x());
-    for (int i : rig.supports) {
-      if (x[i].x() < cx) {
-        lsum += x[i].x();
-        ++ln;
-      } else {
-        rsum += x[i].x();
-        ++rn;
-      }
-    }
-    span_ = rsum / rn - lsum / ln;
-    auto mean = [&](const std::vector<int>& set, int axis) {
-      double sum = 0.0;
-      for (int i : set) sum += x[i][axis];
-      return sum / static_cast<double>(set.size());
-    };
-    width_ = mean(rig.faces[1], 1) - mean(rig.faces[0], 1);
-    height_ = mean(rig.faces[3], 2) - mean(rig.faces[2], 2);
+    section_ = measure_section(rig, mb.body.x);
   }
   if (k >= 0 && k < static_cast<int>(steps_.size()) &&
       s.time - b_.bending_start - k * b_.step_time >= 0.5 * b_.step_time) {
@@ -107,9 +113,9 @@ nlohmann::json BeamObserver::finish() const {
   nlohmann::json j;
   j["mould_end"] = b_.mould_end;
   j["bending_start"] = b_.bending_start;
-  j["span"] = span_;
-  j["width"] = width_;
-  j["height"] = height_;
+  j["span"] = section_.span;
+  j["width"] = section_.width;
+  j["height"] = section_.height;
   const int n = b_.load_steps;
   // Only complete steps count: a run cut short (or a step without a series
   // row in its second half) leaves the table at the last complete one.
@@ -135,8 +141,8 @@ nlohmann::json BeamObserver::finish() const {
     j["deflection_at_max_load"] = deflections[n];
     try {
       const BeamFit fit =
-          fit_three_point(std::span(loads).first(n + 1), std::span(deflections).first(n + 1), span_,
-                          width_, height_, b_.beam_poisson_ratio);
+          fit_three_point(std::span(loads).first(n + 1), std::span(deflections).first(n + 1),
+                          section_.span, section_.width, section_.height, b_.beam_poisson_ratio);
       j["slope_m_per_N"] = fit.slope;
       j["intercept_m"] = fit.intercept;
       j["r2"] = fit.r2;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "talus/dem/driver.hpp"
+#include "talus/dem/membrane/beam_rig.hpp"
 #include "talus/io/csv_writer.hpp"
 
 namespace talus::analysis {
@@ -35,6 +36,16 @@ struct BeamFit {
 // spread in load or a slope that is not positive.
 BeamFit fit_three_point(std::span<const double> load, std::span<const double> deflection,
                         double span, double width, double height, double poisson_ratio);
+
+// The beam as it stands: span between the supports' centroids, width (y)
+// and height (z) between the membrane's opposite flat faces (their mean
+// positions: the rounded edges stand out further).
+struct BeamSection {
+  double span = 0.0, width = 0.0, height = 0.0;
+};
+BeamSection measure_section(const dem::membrane::BeamRig& rig, std::span<const Vec3> x);
+// Mean z of the particles `set` (the deflection's measure).
+double mean_z(const std::vector<int>& set, std::span<const Vec3> x);
 
 class BeamObserver final : public dem::DemObserver<3> {
  public:
@@ -57,11 +68,9 @@ class BeamObserver final : public dem::DemObserver<3> {
     double z = 0.0, reaction = 0.0;
   };
   std::vector<StepMean> steps_;
-  // At the first row from bending_start on: span between the supports'
-  // centroids, width (y) and height (z) between the membrane's opposite flat
-  // faces (their mean positions: the rounded edges stand out further).
+  // Measured at the first row from bending_start on.
   bool measured_ = false;
-  double span_ = 0.0, width_ = 0.0, height_ = 0.0;
+  BeamSection section_;
   // The membrane's rest size (length, width, height): the source's L_b, b, h
   // of 40 x 8 x 8 cm, for the fit with the nominal geometry beside the measured.
   Vec3 nominal_ = Vec3::Zero();

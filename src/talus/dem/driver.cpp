@@ -22,6 +22,17 @@ RunControl make_run_control(const DemScenario& sc, double dt) {
   c.snapshot_every = sc.output.write_snapshots ? steps(sc.output.snapshot_interval, 0) : -1;
   c.checkpoint_every = steps(sc.output.checkpoint_interval, 0);
   c.ke_blowup_factor = sc.run.ke_blowup_factor;
+  if (sc.beam && sc.beam->bending_friction) {
+    FrictionChange f{sc.beam->bending_start, *sc.beam->bending_friction, {}};
+    // The grains' materials: those the particle sources name.
+    for (std::size_t k = 0; k < sc.materials.size(); ++k)
+      for (const auto& src : sc.sources)
+        if (src.material == sc.materials[k].name) {
+          f.materials.push_back(static_cast<int>(k));
+          break;
+        }
+    c.friction_change = f;
+  }
   return c;
 }
 
@@ -93,6 +104,15 @@ int64_t next_multiple(int64_t step, int64_t every) {
   return every > 0 ? (step / every + 1) * every : std::numeric_limits<int64_t>::max();
 }
 
+// The stepper keeps its contact coefficients from construction on, so a new
+// one takes the changed materials; the state (forces and contact histories)
+// lives in the system and carries over as it does from a checkpoint.
+template <int D>
+void change_friction(DemRun<D>& run, const FrictionChange& f) {
+  for (int k : f.materials) run.system.materials[k].friction = f.friction;
+  run.stepper = make_stepper(run.system);
+}
+
 }  // namespace
 
 template <int D>
@@ -101,6 +121,11 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
   auto& s = run.system;
   const int64_t end = std::llround(c.duration / s.dt);
   const double e_avail = available_energy(s);
+  const int64_t change_step = c.friction_change ? std::llround(c.friction_change->time / s.dt)
+                                                : std::numeric_limits<int64_t>::max();
+  // Due already (a resumed run past it, or a change at t = 0): before anything.
+  const bool changed_before = s.step >= change_step;
+  if (changed_before) change_friction(run, *c.friction_change);
   if (fresh) {
     run.stepper->prime();
     for (auto* o : obs) o->on_series(run);
@@ -113,10 +138,15 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
   ProgressClock progress(c.progress_seconds, start);
   const int64_t health_every = std::max<int64_t>(1, std::min<int64_t>(1000, end / 100 + 1));
   while (s.step < end) {
-    const int64_t next = std::min(
+    int64_t next = std::min(
         {end, next_multiple(s.step, c.series_every), next_multiple(s.step, c.snapshot_every),
          next_multiple(s.step, c.checkpoint_every), next_multiple(s.step, health_every)});
+    if (s.step < change_step) next = std::min(next, change_step);
     run.stepper->advance(next - s.step);
+    if (s.step == change_step && !changed_before) {
+      change_friction(run, *c.friction_change);
+      run.stepper->resume();
+    }
     check_health(run, e_avail, c.ke_blowup_factor);
     const bool last = s.step == end;
     if (s.step % c.series_every == 0 || last)

@@ -4,6 +4,7 @@
 // It also watches the run's health: NaN and energy blow-up stop it with a
 // diagnosis instead of producing garbage.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "talus/dem/builder.hpp"
@@ -20,6 +21,14 @@ class DemObserver {
   virtual void on_progress(double /*time*/, double /*end*/, double /*steps_per_s*/) {}
 };
 
+// A change of the grains' friction during the run (the beam's μ_init -> μ_p,
+// Götz 2024 §5.3): from `time` on, the given materials have `friction`.
+struct FrictionChange {
+  double time = 0.0;
+  double friction = 0.0;
+  std::vector<int> materials;
+};
+
 struct RunControl {
   double duration = 0.0;
   int64_t series_every = 100;    // steps
@@ -27,6 +36,7 @@ struct RunControl {
   int64_t checkpoint_every = 0;  // steps; 0 = none
   double ke_blowup_factor = 10.0;
   double progress_seconds = 1.0;  // wall seconds between progress calls
+  std::optional<FrictionChange> friction_change;
 };
 
 RunControl make_run_control(const DemScenario& sc, double dt);

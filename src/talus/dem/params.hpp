@@ -320,13 +320,35 @@ struct GripperParams {
 // so that the beam comes to rest within a step: its own contact damping lets
 // the bending mode (~20 Hz at full size) ring for many steps. At rest it
 // exerts no force, so the deflection it settles to is the undamped one.
+// damping_end stops it (the four-point test damps only the settling, since
+// its rods never let the beam rest).
+//
+// test = FourPoint (source §5.3) drives the bending by displacement instead:
+// from bending_start two rods, the top-face particles within load_length/2 of
+// x = centre -+ span/6 (span: between the supports' centroids at rest), move
+// down together, their speed rising linearly to rod_speed over rod_ramp, until
+// they have travelled rod_travel, the midspan deflection that max_strain
+// means by ε = 108 h Δz / (23 L²) for the rest length L and height h; then they
+// hold. bending_friction, when given, becomes the friction of the grains'
+// materials at bending_start (the source's μ_p; the materials' own friction is
+// μ_init of the vacuum).
+enum class BeamTest { ThreePoint, FourPoint };
+
 struct BeamParams {
+  BeamTest test = BeamTest::ThreePoint;
   std::string membrane;
   double mould_end = 0.0, bending_start = 0.0;
   double support_length = 0.0, load_length = 0.0, measure_length = 0.0;
   double max_load = 0.0, load_step = 0.0, step_time = 0.0, load_ramp = 0.0;
   double beam_poisson_ratio = 0.0;
   double damping = 0.0;
+  double damping_end = kNever;  // the damping acts from mould_end until this
+  double rod_speed = 0.0, rod_ramp = 0.0, max_strain = 0.0;
+  // The Gaussian's width (in strain) that smooths σ(ε) before Y_b is sought
+  // (analysis/beam_four_point.hpp); the source does not give its own.
+  double yield_smoothing = 0.0;
+  double rod_travel = 0.0;  // derived (four-point)
+  std::optional<double> bending_friction;
   int load_steps = 0;  // derived: n = max_load / load_step
   // The load that step k (0 .. 2n) holds once ramped in.
   double step_load(int k) const { return load_step * (k <= load_steps ? k : 2 * load_steps - k); }
@@ -334,7 +356,9 @@ struct BeamParams {
   double load_at(double t) const;
   // Which load step t falls in (0 .. 2 n), -1 before bending_start, 2n + 1 after.
   int step_at(double t) const;
-  double end() const { return bending_start + (2 * load_steps + 1) * step_time; }
+  // How far the rods have moved down at time t (four-point).
+  double rod_travel_at(double t) const;
+  double end() const;
 };
 
 struct DemScenario {

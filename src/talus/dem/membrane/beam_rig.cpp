@@ -23,6 +23,20 @@ double BeamParams::load_at(double t) const {
   return step_load(k - 1) + (step_load(k) - step_load(k - 1)) * std::clamp(u, 0.0, 1.0);
 }
 
+double BeamParams::rod_travel_at(double t) const {
+  const double tau = t - bending_start;
+  if (!(tau > 0)) return 0.0;
+  const double ramped =
+      tau < rod_ramp ? 0.5 * rod_speed * tau * tau / rod_ramp : rod_speed * (tau - 0.5 * rod_ramp);
+  return std::min(ramped, rod_travel);
+}
+
+double BeamParams::end() const {
+  if (test == BeamTest::ThreePoint) return bending_start + (2 * load_steps + 1) * step_time;
+  // The travel ends past the ramp (the parser asks for that).
+  return bending_start + rod_travel / rod_speed + 0.5 * rod_ramp;
+}
+
 }  // namespace talus::dem
 
 namespace talus::dem::membrane {
@@ -39,12 +53,13 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
   rig.params = b;
   rig.mould_lo = lo;
   rig.mould_hi = hi;
+  const bool four = b.test == BeamTest::FourPoint;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const bool bottom = x[i].z() <= lo.z() + tol, top = x[i].z() >= hi.z() - tol;
     const double off = std::abs(x[i].x() - cx);
     const int id = static_cast<int>(i);
     if (bottom && off >= 0.5 * (hi.x() - lo.x()) - b.support_length) rig.supports.push_back(id);
-    if (top && off <= 0.5 * b.load_length) rig.loaded.push_back(id);
+    if (top && !four && off <= 0.5 * b.load_length) rig.loaded.push_back(id);
     if (bottom && off <= 0.5 * b.measure_length) rig.measured.push_back(id);
     if (x[i].y() <= lo.y() + tol) rig.faces[0].push_back(id);
     if (x[i].y() >= hi.y() - tol) rig.faces[1].push_back(id);
@@ -59,7 +74,20 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
                       key, b.membrane, face, spec.spacing));
   };
   need(rig.supports, "support_length", "flat bottom");
-  need(rig.loaded, "load_length", "flat top");
+  if (four) {
+    // The rods sit at the thirds of the span between the supports' centroids.
+    double sl = 0, sr = 0;
+    int nl = 0, nr = 0;
+    for (int i : rig.supports) (x[i].x() < cx ? (sl += x[i].x(), ++nl) : (sr += x[i].x(), ++nr));
+    const double third = nl > 0 && nr > 0 ? (sr / nr - sl / nl) / 6.0 : 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (x[i].z() >= hi.z() - tol &&
+          std::abs(std::abs(x[i].x() - cx) - third) <= 0.5 * b.load_length)
+        rig.rods.push_back(static_cast<int>(i));
+    need(rig.rods, "load_length", "flat top at the span's thirds");
+  } else {
+    need(rig.loaded, "load_length", "flat top");
+  }
   need(rig.measured, "measure_length", "flat bottom");
   // Both ends must carry the beam, or it is a cantilever.
   const auto left =
@@ -98,14 +126,44 @@ void pin_supports_if_due(BeamRig& rig, Membrane& m, double t) {
     m.fixed[i] = 1;
     m.v[i].setZero();
   }
+  rig.rod_anchor.clear();
+  for (int i : rig.rods) {
+    m.fixed[i] = 1;
+    m.v[i].setZero();
+    rig.rod_anchor.push_back(m.x[i]);
+  }
+}
+
+void move_rods(const BeamRig& rig, Membrane& m, double t) {
+  if (!rig.supported || rig.rods.empty()) return;
+  const BeamParams& b = rig.params;
+  const double travel = b.rod_travel_at(t);
+  const double tau = t - b.bending_start;
+  const double speed = travel >= b.rod_travel ? 0.0
+                       : tau < b.rod_ramp     ? b.rod_speed * tau / b.rod_ramp
+                                              : b.rod_speed;
+  for (std::size_t k = 0; k < rig.rods.size(); ++k) {
+    const int i = rig.rods[k];
+    m.x[i] = rig.rod_anchor[k] - Vec3(0, 0, travel);
+    m.v[i] = Vec3(0, 0, -speed);
+  }
+}
+
+double rods_push(const BeamRig& rig, const Membrane& m, const Vec3& g) {
+  // The rod holds particle i with -(f_i + m_i g); its z part is the push down.
+  double push = 0.0;
+  for (int i : rig.rods) push += m.f[i].z() + m.mass[i] * g.z();
+  return push;
 }
 
 double damping_factor(const BeamRig& rig, double t, double dt) {
-  if (!(rig.params.damping > 0) || t < rig.params.mould_end) return 1.0;
+  if (!(rig.params.damping > 0) || t < rig.params.mould_end || t >= rig.params.damping_end)
+    return 1.0;
   return std::exp(-rig.params.damping * dt);
 }
 
 void add_load(const BeamRig& rig, Membrane& m, double t) {
+  if (rig.params.test != BeamTest::ThreePoint) return;
   const double f = rig.params.load_at(t);
   if (f == 0.0) return;
   const double share = f / static_cast<double>(rig.loaded.size());

@@ -88,7 +88,10 @@ void MembraneStep::step(DemSystem<3>& s) {
         m.v[i] = w.velocity_at(m.x[i], s.time);
       }
     }
-    if (mb.rig) hold_in_mould(*mb.rig, m, s.time);
+    if (mb.rig) {
+      hold_in_mould(*mb.rig, m, s.time);
+      move_rods(*mb.rig, m, s.time);
+    }
   }
   compute_forces(s);
   kick(s, 0.5 * dt);
@@ -178,7 +181,11 @@ void MembraneStep::compute_forces(DemSystem<3>& s) {
       mb.contacts += L.contacts;
     }
     object_contacts(s, k);
-    if (mb.rig) add_load(*mb.rig, m, s.time);
+    if (mb.rig) {
+      add_load(*mb.rig, m, s.time);
+      mb.rig->rod_force = rods_push(*mb.rig, m, s.gravity);
+      mb.rig->rod_impulse += mb.rig->rod_force * s.dt;
+    }
     mb.reaction.setZero();
     for (std::size_t i = 0; i < m.x.size(); ++i)
       if (m.fixed[i]) mb.reaction -= m.f[i] + m.mass[i] * s.gravity;
