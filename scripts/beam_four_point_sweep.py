@@ -49,7 +49,9 @@ def run_one(a, protocol, mu, seed):
             "E_b": b.get("youngs_modulus", nan), "r2": b.get("fit_r2", nan),
             "Y_b": b["yield_strength"] if b.get("yield_found") else nan,
             "eps_Y": b["yield_strain"] if b.get("yield_found") else nan,
-            "largest_strain": b.get("largest_strain", nan)}
+            "sigma_max": b.get("largest_stress", nan), "largest_strain": b.get("largest_strain", nan),
+            "E_b_nominal": b.get("youngs_modulus_nominal", nan),
+            "Y_b_nominal": b.get("yield_strength_nominal", nan)}
 
 
 def fit_eq46(mu, y):
@@ -86,20 +88,26 @@ def main():
               if p == "A" or mu >= MU_B]  # B excludes mu_p < mu_init (source)
     with concurrent.futures.ThreadPoolExecutor(a.j) as pool:
         rows = list(pool.map(lambda c: run_one(a, *c), combos))
-    keys = ["protocol", "mu_init", "mu_p", "seed", "E_b", "r2", "Y_b", "eps_Y", "largest_strain"]
+    keys = ["protocol", "mu_init", "mu_p", "seed", "E_b", "r2", "Y_b", "eps_Y", "sigma_max", "largest_strain",
+            "E_b_nominal", "Y_b_nominal"]
     with open(os.path.join(a.out, "sweep.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
         w.writerows(rows)
-    print("| protocol | mu_init | mu_p | seed | E_b [MPa] | fit r^2 | Y_b [kPa] | eps at Y_b | largest eps |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| protocol | mu_init | mu_p | seed | E_b [MPa] | fit r^2 | Y_b [kPa] | eps at Y_b | largest sigma [kPa] | "
+          "largest eps | E_b, Y_b with the rest size [MPa, kPa] |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['protocol']} | {r['mu_init']:g} | {r['mu_p']:g} | {r['seed']} | {r['E_b'] / 1e6:.3f} | "
-              f"{r['r2']:.3f} | {r['Y_b'] / 1e3:.2f} | {r['eps_Y']:.4f} | {r['largest_strain']:.4f} |")
+              f"{r['r2']:.3f} | {r['Y_b'] / 1e3:.2f} | {r['eps_Y']:.4f} | {r['sigma_max'] / 1e3:.2f} | "
+              f"{r['largest_strain']:.4f} | {r['E_b_nominal'] / 1e6:.3f}, {r['Y_b_nominal'] / 1e3:.2f} |")
     fits = {}
     for p in a.protocols.split(","):
         mus = sorted({r["mu_p"] for r in rows if r["protocol"] == p})
-        ys = [np.nanmean([r["Y_b"] for r in rows if r["protocol"] == p and r["mu_p"] == m]) for m in mus]
+        ys = []
+        for m in mus:
+            found = [r["Y_b"] for r in rows if r["protocol"] == p and r["mu_p"] == m and np.isfinite(r["Y_b"])]
+            ys.append(np.mean(found) if found else float("nan"))
         ok = [(m, y) for m, y in zip(mus, ys) if np.isfinite(y)]
         fit = fit_eq46([m for m, _ in ok], [y for _, y in ok])
         fits[p] = (mus, ys, fit)

@@ -41,24 +41,12 @@ BeamFit fit_three_point(std::span<const double> load, std::span<const double> de
 }
 
 BeamSection measure_section(const dem::membrane::BeamRig& rig, std::span<const Vec3> x) {
-  double lsum = 0, rsum = 0;
-  int ln = 0, rn = 0;
-  const double cx = 0.5 * (rig.mould_lo.x() + rig.mould_hi.x());
-  for (int i : rig.supports) {
-    if (x[i].x() < cx) {
-      lsum += x[i].x();
-      ++ln;
-    } else {
-      rsum += x[i].x();
-      ++rn;
-    }
-  }
   auto mean = [&](const std::vector<int>& set, int axis) {
     double sum = 0.0;
     for (int i : set) sum += x[i][axis];
     return sum / static_cast<double>(set.size());
   };
-  return {rsum / rn - lsum / ln, mean(rig.faces[1], 1) - mean(rig.faces[0], 1),
+  return {dem::membrane::support_span(rig, x), mean(rig.faces[1], 1) - mean(rig.faces[0], 1),
           mean(rig.faces[3], 2) - mean(rig.faces[2], 2)};
 }
 

@@ -159,8 +159,8 @@ void FourPointObserver::on_series(const dem::DemRun<3>& run) {
   double dz = 0, eps = 0, sigma = 0;
   if (started_) {
     dz = z0_ - z;
-    eps = four_point_strain(dz, nominal_.x(), nominal_.z());
-    sigma = four_point_stress(force, nominal_.x(), nominal_.z(), nominal_.y());
+    eps = four_point_strain(dz, span_, height_);
+    sigma = four_point_stress(force, span_, height_, width_);
     strain_.push_back(eps);
     stress_.push_back(sigma);
   }
@@ -182,6 +182,14 @@ nlohmann::json FourPointObserver::finish() const {
   if (b_.bending_friction) j["bending_friction"] = *b_.bending_friction;
   if (strain_.empty()) return j;
   j["largest_strain"] = *std::max_element(strain_.begin(), strain_.end());
+  const auto top = std::max_element(stress_.begin(), stress_.end());
+  j["largest_stress"] = *top;
+  j["strain_at_largest_stress"] = strain_[top - stress_.begin()];
+  // The same curve with the membrane's rest length, height and width, as the
+  // source computes it (its supports are at the ends of a beam that the
+  // vacuum shrinks a little): σ scales by L / (h² t), E = σ/ε by L³ / (h³ t).
+  const double l = nominal_.x() / span_, hr = height_ / nominal_.z(), tr = width_ / nominal_.y();
+  const double stress_scale = l * hr * hr * tr, modulus_scale = l * l * l * hr * hr * hr * tr;
   // The source's limit of the linear part (§5.3.2).
   constexpr double kLinearStrain = 0.002;
   try {
@@ -189,10 +197,7 @@ nlohmann::json FourPointObserver::finish() const {
     j["youngs_modulus"] = fit.modulus;
     j["fit_points"] = fit.points;
     j["fit_r2"] = fit.r2;
-    // E = σ/ε scales as L³ / (h³ t): the same run with the section measured at
-    // bending_start (the vacuum compacts it) in place of the rest size.
-    const double l = span_ / nominal_.x(), hr = nominal_.z() / height_, tr = nominal_.y() / width_;
-    j["youngs_modulus_measured_geometry"] = fit.modulus * l * l * l * hr * hr * hr * tr;
+    j["youngs_modulus_nominal"] = fit.modulus * modulus_scale;
   } catch (const InputError& e) {
     j["fit_error"] = e.what();
   }
@@ -201,6 +206,7 @@ nlohmann::json FourPointObserver::finish() const {
   if (yp.found) {
     j["yield_strength"] = yp.stress;
     j["yield_strain"] = yp.strain;
+    j["yield_strength_nominal"] = yp.stress * stress_scale;
   }
   return j;
 }

@@ -9,9 +9,13 @@
 // positive.
 //
 // The observer records, at each series time, into <out>/beam.csv: time, the
-// rods' travel and their mean force since the previous row, the mean z of the measured
-// bottom-centre particles, Δz (from bending_start on), ε, σ (rest geometry, as the source), the
-// supports' reaction z and the kinetic energy of grains and membrane.
+// rods' travel and their mean force since the previous row, the mean z of the
+// measured bottom-centre particles, Δz (from bending_start on), ε, σ, the
+// supports' reaction z and the kinetic energy of grains and membrane. L, h and
+// t are the beam's as it stands at bending_start: the span between the
+// supports' centroids and the section between opposite faces (the vacuum
+// shrinks it; the summary gives E_b and Y_b with the rest size too, as the
+// source computes them).
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -54,7 +58,7 @@ class FourPointObserver final : public dem::DemObserver<3> {
   FourPointObserver(std::filesystem::path out, const dem::DemScenario& sc,
                     const dem::DemSystem<3>& s);
   void on_series(const dem::DemRun<3>& run) override;
-  // E_b, Y_b, the largest strain reached, and the geometry used.
+  // E_b, Y_b, the largest strain and stress, and the geometry used.
   nlohmann::json finish() const;
 
  private:

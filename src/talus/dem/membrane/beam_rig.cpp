@@ -76,10 +76,7 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
   need(rig.supports, "support_length", "flat bottom");
   if (four) {
     // The rods sit at the thirds of the span between the supports' centroids.
-    double sl = 0, sr = 0;
-    int nl = 0, nr = 0;
-    for (int i : rig.supports) (x[i].x() < cx ? (sl += x[i].x(), ++nl) : (sr += x[i].x(), ++nr));
-    const double third = nl > 0 && nr > 0 ? (sr / nr - sl / nl) / 6.0 : 0.0;
+    const double third = support_span(rig, x) / 6.0;
     for (std::size_t i = 0; i < x.size(); ++i)
       if (x[i].z() >= hi.z() - tol &&
           std::abs(std::abs(x[i].x() - cx) - third) <= 0.5 * b.load_length)
@@ -95,6 +92,22 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
   if (left == 0 || left == static_cast<std::ptrdiff_t>(rig.supports.size()))
     throw InputError("[beam] 'support_length': supports at one end only");
   body.rig = std::move(rig);
+}
+
+double support_span(const BeamRig& rig, std::span<const Vec3> x) {
+  const double cx = 0.5 * (rig.mould_lo.x() + rig.mould_hi.x());
+  double left = 0, right = 0;
+  int nl = 0, nr = 0;
+  for (int i : rig.supports) {
+    if (x[i].x() < cx) {
+      left += x[i].x();
+      ++nl;
+    } else {
+      right += x[i].x();
+      ++nr;
+    }
+  }
+  return nl > 0 && nr > 0 ? right / nr - left / nl : 0.0;
 }
 
 void hold_in_mould(BeamRig& rig, Membrane& m, double t) {

@@ -4,6 +4,7 @@
 // the load of the bending test. The builder sets it up with apply_beam;
 // MembraneStep applies it each step; analysis/beam.hpp reads it.
 #include <array>
+#include <span>
 #include <vector>
 
 #include "talus/core/space.hpp"
@@ -44,6 +45,10 @@ struct BeamRig {
 // Finds the beam's membrane and its particle sets (from the rest mesh) and
 // gives it the rig. Throws InputError for a missing membrane or an empty set.
 void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s);
+
+// The distance between the centroids of the supports at either end (0 when
+// one end has none), for the particle positions x.
+double support_span(const BeamRig& rig, std::span<const Vec3> x);
 
 // Keeps the free particles inside the mould (before mould_end: a particle
 // beyond a face is put back on it and loses its outward speed), then closes
