@@ -12,9 +12,10 @@ Usage: beam_four_point_sweep.py TALUS SCENARIO OUT_DIR --mu 0,0.3,0.6,1.2 [--pro
 
 Runs SCENARIO (a four-point [beam] scenario whose materials 0 are the grains) for each
 protocol, mu_p and seed with one thread each, N at a time. Prints one line per run (E_b,
-Y_b, largest strain), the fit of eq. 46 per protocol over the seeds' mean Y_b (a by a
-grid search, Y0 and Yinf by least squares at each a), and writes OUT_DIR/sweep.csv; --plot
-draws E_b and Y_b over mu_p (as the source's Abb. 29). Runs already finished in OUT_DIR
+Y_b, the largest stress and strain), the fit of eq. 46 per protocol over the seeds' mean Y_b
+and, beside it, over their mean largest stress (a by a grid search, Y0 and Yinf by least
+squares at each a), and writes OUT_DIR/sweep.csv; --plot draws E_b, Y_b and the largest
+stress over mu_p (as the source's Abb. 29). Runs already finished in OUT_DIR
 (a summary.json there) are read, not rerun.
 """
 import argparse
@@ -102,20 +103,22 @@ def main():
               f"{r['r2']:.3f} | {r['Y_b'] / 1e3:.2f} | {r['eps_Y']:.4f} | {r['sigma_max'] / 1e3:.2f} | "
               f"{r['largest_strain']:.4f} | {r['E_b_nominal'] / 1e6:.3f}, {r['Y_b_nominal'] / 1e3:.2f} |")
     fits = {}
-    for p in a.protocols.split(","):
-        mus = sorted({r["mu_p"] for r in rows if r["protocol"] == p})
-        ys = []
-        for m in mus:
-            found = [r["Y_b"] for r in rows if r["protocol"] == p and r["mu_p"] == m and np.isfinite(r["Y_b"])]
-            ys.append(np.mean(found) if found else float("nan"))
-        ok = [(m, y) for m, y in zip(mus, ys) if np.isfinite(y)]
-        fit = fit_eq46([m for m, _ in ok], [y for _, y in ok])
-        fits[p] = (mus, ys, fit)
-        if fit:
-            print(f"protocol {p}: Y0 = {fit[0] / 1e3:.2f} kPa, Yinf = {fit[1] / 1e3:.2f} kPa, a = {fit[2]:.2f} "
-                  f"(source, E_p = 100 MPa: A 20.63, 96.15, 6.67; B 35.65, 119.41, 2.85)")
-        else:
-            print(f"protocol {p}: fewer than 3 friction values with a yield point, no fit")
+    for key in ("Y_b", "sigma_max"):
+        for p in a.protocols.split(","):
+            mus = sorted({r["mu_p"] for r in rows if r["protocol"] == p})
+            ys = []
+            for m in mus:
+                found = [r[key] for r in rows if r["protocol"] == p and r["mu_p"] == m and np.isfinite(r[key])]
+                ys.append(np.mean(found) if found else float("nan"))
+            ok = [(m, y) for m, y in zip(mus, ys) if np.isfinite(y)]
+            fit = fit_eq46([m for m, _ in ok], [y for _, y in ok])
+            fits[key, p] = (mus, ys, fit)
+            if fit:
+                print(f"eq. 46 on {key}, protocol {p} ({len(ok)} friction values): Y0 = {fit[0] / 1e3:.2f} kPa, "
+                      f"Yinf = {fit[1] / 1e3:.2f} kPa, a = {fit[2]:.2f} "
+                      f"(source Y_b, E_p = 100 MPa: A 20.63, 96.15, 6.67; B 35.65, 119.41, 2.85)")
+            else:
+                print(f"eq. 46 on {key}, protocol {p}: fewer than 3 friction values with a value, no fit")
     if a.plot:
         plot(a.plot, rows, fits)
 
@@ -124,21 +127,23 @@ def plot(out, rows, fits):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4))
-    for k, (p, (mus, ys, fit)) in enumerate(fits.items()):
-        c = f"C{k}"
-        mine = [r for r in rows if r["protocol"] == p]
-        ax.plot([r["mu_p"] for r in mine], [r["E_b"] / 1e6 for r in mine], "o", color=c, label=f"protocol {p}")
-        bx.plot([r["mu_p"] for r in mine], [r["Y_b"] / 1e3 for r in mine], "o", color=c, label=f"protocol {p}")
-        if fit:
-            m = np.linspace(0, max(mus), 100)
-            bx.plot(m, ((fit[0] - fit[1]) * np.exp(-fit[2] * m) + fit[1]) / 1e3, "-", color=c, lw=0.8,
-                    label=f"eq. 46: Y0 {fit[0] / 1e3:.1f}, Yinf {fit[1] / 1e3:.1f} kPa, a {fit[2]:.2f}")
-    ax.set_xlabel(r"grain friction at bending $\mu_p$")
-    ax.set_ylabel(r"$E_b$ [MPa] (fit over $\epsilon \leq 0.002$)")
-    bx.set_xlabel(r"grain friction at bending $\mu_p$")
-    bx.set_ylabel(r"yield strength $Y_b$ [kPa]")
-    for x in (ax, bx):
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4))
+    protocols = sorted({p for _, p in fits})
+    for k, p in enumerate(protocols):
+        c, mine = f"C{k}", [r for r in rows if r["protocol"] == p]
+        axes[0].plot([r["mu_p"] for r in mine], [r["E_b"] / 1e6 for r in mine], "o", color=c, label=f"protocol {p}")
+        for ax, key in ((axes[1], "Y_b"), (axes[2], "sigma_max")):
+            ax.plot([r["mu_p"] for r in mine], [r[key] / 1e3 for r in mine], "o", color=c, label=f"protocol {p}")
+            mus, _, fit = fits[key, p]
+            if fit:
+                m = np.linspace(0, max(mus), 100)
+                ax.plot(m, ((fit[0] - fit[1]) * np.exp(-fit[2] * m) + fit[1]) / 1e3, "-", color=c, lw=0.8,
+                        label=f"eq. 46: {fit[0] / 1e3:.0f}, {fit[1] / 1e3:.0f} kPa, a {fit[2]:.2f}")
+    axes[0].set_ylabel(r"$E_b$ [MPa] (fit over $\epsilon \leq 0.002$)")
+    axes[1].set_ylabel(r"yield strength $Y_b$ [kPa] (curvature turns positive)")
+    axes[2].set_ylabel(r"largest stress $\sigma_{max}$ [kPa]")
+    for x in axes:
+        x.set_xlabel(r"grain friction at bending $\mu_p$")
         x.grid(alpha=0.3)
         x.legend(fontsize=7)
     fig.tight_layout()
