@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "analyse.hpp"
+#include "analyse_beam.hpp"
 #include "analyse_structure.hpp"
 #include "calibrate.hpp"
 #include "commands.hpp"
@@ -133,6 +134,17 @@ int main(int argc, char** argv) {
   pk_cmd->add_option("--margin", pc.margin,
                      "also leave grains this close to the box out of the mean, m");
 
+  BeamAnalysisOptions bc;
+  auto* beam_cmd = ana_cmd->add_subcommand(
+      "beam", "E_b and Y_b of a 4-point beam run again, with another smoothing (Goetz 5.3)");
+  beam_cmd->add_option("run", bc.run_dir, "output folder of a four-point [beam] run")->required();
+  beam_cmd->add_option("--yield-smoothing", bc.yield_smoothing,
+                       "Gaussian width in strain for Y_b (default: the run's)");
+  beam_cmd->add_option("--linear-strain", bc.linear_strain,
+                       "E_b from the fit over 0 < strain <= this (default 0.002)");
+  beam_cmd->add_option("--out,-o", bc.out, "output folder (default: RUN/analysis)");
+  beam_cmd->add_flag("--quiet,-q", bc.quiet, "no summary on stderr");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -150,6 +162,7 @@ int main(int argc, char** argv) {
     if (rdf_cmd->parsed()) return rdf_command(rc);
     if (d2_cmd->parsed()) return d2min_command(dc);
     if (pk_cmd->parsed()) return packing_command(pc);
+    if (beam_cmd->parsed()) return beam_analysis_command(bc);
   } catch (const talus::InputError& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 2;
