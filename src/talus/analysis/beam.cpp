@@ -50,6 +50,17 @@ BeamSection measure_section(const dem::membrane::BeamRig& rig, std::span<const V
           mean(rig.faces[3], 2) - mean(rig.faces[2], 2)};
 }
 
+BeamMembrane find_beam_membrane(const dem::DemScenario& sc, const dem::DemSystem<3>& s) {
+  if (!sc.beam) throw InputError("[beam]: missing");
+  BeamMembrane b;
+  for (std::size_t k = 0; k < s.membranes.size(); ++k)
+    if (s.membranes[k].rig) b.index = static_cast<int>(k);
+  if (b.index < 0) throw InputError("[beam]: no membrane carries the rig");
+  for (const auto& m : sc.membranes)
+    if (m.name == sc.beam->membrane) b.rest_size = Vec3(m.size_x, m.size_y, m.size_z);
+  return b;
+}
+
 double mean_z(const std::vector<int>& set, std::span<const Vec3> x) {
   double z = 0.0;
   for (int i : set) z += x[i].z();
@@ -59,13 +70,8 @@ double mean_z(const std::vector<int>& set, std::span<const Vec3> x) {
 BeamObserver::BeamObserver(std::filesystem::path out, const dem::DemScenario& sc,
                            const dem::DemSystem<3>& s)
     : out_(std::move(out)) {
-  if (!sc.beam) throw InputError("[beam]: missing");
+  beam_ = find_beam_membrane(sc, s);
   b_ = *sc.beam;
-  for (std::size_t k = 0; k < s.membranes.size(); ++k)
-    if (s.membranes[k].rig) membrane_ = static_cast<int>(k);
-  if (membrane_ < 0) throw InputError("[beam]: no membrane carries the rig");
-  for (const auto& m : sc.membranes)
-    if (m.name == b_.membrane) nominal_ = Vec3(m.size_x, m.size_y, m.size_z);
   steps_.resize(2 * b_.load_steps + 1);
   std::filesystem::create_directories(out_);
   csv_ = std::make_unique<io::CsvSeries>(
@@ -77,7 +83,7 @@ BeamObserver::BeamObserver(std::filesystem::path out, const dem::DemScenario& sc
 
 void BeamObserver::on_series(const dem::DemRun<3>& run) {
   const auto& s = run.system;
-  const auto& mb = s.membranes[membrane_];
+  const auto& mb = s.membranes[beam_.index];
   const auto& rig = *mb.rig;
   const double z = mean_z(rig.measured, mb.body.x);
   const int k = b_.step_at(s.time);
@@ -137,10 +143,11 @@ nlohmann::json BeamObserver::finish() const {
       j["youngs_modulus"] = fit.youngs_modulus;
       j["effective_modulus"] = fit.effective_modulus;
       // Same line, the rest geometry: the modulus a reader of the source compares.
+      const Vec3& nominal = beam_.rest_size;
       const BeamFit rest =
           fit_three_point(std::span(loads).first(n + 1), std::span(deflections).first(n + 1),
-                          nominal_.x(), nominal_.y(), nominal_.z(), b_.beam_poisson_ratio);
-      j["nominal_size"] = {nominal_.x(), nominal_.y(), nominal_.z()};
+                          nominal.x(), nominal.y(), nominal.z(), b_.beam_poisson_ratio);
+      j["nominal_size"] = {nominal.x(), nominal.y(), nominal.z()};
       j["youngs_modulus_nominal"] = rest.youngs_modulus;
       j["effective_modulus_nominal"] = rest.effective_modulus;
     } catch (const InputError& e) {

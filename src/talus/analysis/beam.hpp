@@ -44,6 +44,14 @@ struct BeamSection {
   double span = 0.0, width = 0.0, height = 0.0;
 };
 BeamSection measure_section(const dem::membrane::BeamRig& rig, std::span<const Vec3> x);
+// Which membrane carries the rig and its rest size (x, y, z): the source's
+// L_b and section. Throws InputError when the scenario has no [beam] or no
+// membrane has the rig.
+struct BeamMembrane {
+  int index = -1;
+  Vec3 rest_size = Vec3::Zero();
+};
+BeamMembrane find_beam_membrane(const dem::DemScenario& sc, const dem::DemSystem<3>& s);
 // Mean z of the particles `set` (the deflection's measure).
 double mean_z(const std::vector<int>& set, std::span<const Vec3> x);
 
@@ -61,7 +69,7 @@ class BeamObserver final : public dem::DemObserver<3> {
  private:
   std::filesystem::path out_;
   dem::BeamParams b_;
-  int membrane_ = -1;
+  BeamMembrane beam_;
   std::unique_ptr<io::CsvSeries> csv_;
   struct StepMean {
     int rows = 0;
@@ -71,9 +79,6 @@ class BeamObserver final : public dem::DemObserver<3> {
   // Measured at the first row from bending_start on.
   bool measured_ = false;
   BeamSection section_;
-  // The membrane's rest size (length, width, height): the source's L_b, b, h
-  // of 40 x 8 x 8 cm, for the fit with the nominal geometry beside the measured.
-  Vec3 nominal_ = Vec3::Zero();
 };
 
 }  // namespace talus::analysis

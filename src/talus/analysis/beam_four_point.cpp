@@ -122,12 +122,10 @@ FourPointObserver::FourPointObserver(std::filesystem::path out, const dem::DemSc
     : out_(std::move(out)) {
   if (!sc.beam || sc.beam->test != dem::BeamTest::FourPoint)
     throw InputError("[beam]: no four-point test");
+  const BeamMembrane beam = find_beam_membrane(sc, s);
+  membrane_ = beam.index;
+  nominal_ = beam.rest_size;
   b_ = *sc.beam;
-  for (std::size_t k = 0; k < s.membranes.size(); ++k)
-    if (s.membranes[k].rig) membrane_ = static_cast<int>(k);
-  if (membrane_ < 0) throw InputError("[beam]: no membrane carries the rig");
-  for (const auto& m : sc.membranes)
-    if (m.name == b_.membrane) nominal_ = Vec3(m.size_x, m.size_y, m.size_z);
   std::filesystem::create_directories(out_);
   csv_ = std::make_unique<io::CsvSeries>(
       out_ / "beam.csv",
