@@ -54,19 +54,8 @@ int beam_analysis_command(const BeamAnalysisOptions& o) {
                    {"yield_smoothing", width},
                    {"linear_strain", o.linear_strain},
                    {"rows", strain.size()}};
-  const auto top = std::max_element(stress.begin(), stress.end());
-  j["largest_stress"] = *top;
-  j["strain_at_largest_stress"] = strain[top - stress.begin()];
-  const auto fit = analysis::fit_small_strain(strain, stress, o.linear_strain);
-  j["youngs_modulus"] = fit.modulus;
-  j["fit_points"] = fit.points;
-  j["fit_r2"] = fit.r2;
-  const auto yp = analysis::yield_from_curvature(strain, stress, width);
-  j["yield_found"] = yp.found;
-  if (yp.found) {
-    j["yield_strength"] = yp.stress;
-    j["yield_strain"] = yp.strain;
-  }
+  j.update(analysis::four_point_curve(strain, stress, o.linear_strain, width));
+  if (j.contains("fit_error")) throw InputError(j["fit_error"].get<std::string>());
   const fs::path out = o.out.empty() ? run / "analysis" : fs::path(o.out);
   fs::create_directories(out);
   std::ofstream file(out / "beam_four_point.json");
@@ -74,10 +63,13 @@ int beam_analysis_command(const BeamAnalysisOptions& o) {
   if (!file) throw RunError("cannot write " + (out / "beam_four_point.json").string());
   if (!o.quiet)
     fmt::print(stderr, "E_b {:.4g} Pa (r2 {:.4f}, {} points), Y_b {}, largest stress {:.4g} Pa\n",
-               fit.modulus, fit.r2, fit.points,
-               yp.found ? fmt::format("{:.4g} Pa at strain {:.4g}", yp.stress, yp.strain)
-                        : std::string("none"),
-               *top);
+               j["youngs_modulus"].get<double>(), j["fit_r2"].get<double>(),
+               j["fit_points"].get<int>(),
+               j["yield_found"].get<bool>()
+                   ? fmt::format("{:.4g} Pa at strain {:.4g}", j["yield_strength"].get<double>(),
+                                 j["yield_strain"].get<double>())
+                   : std::string("none"),
+               j["largest_stress"].get<double>());
   return 0;
 }
 

@@ -5,12 +5,14 @@
 #include <limits>
 #include <string>
 
+#include "talus/analysis/beam_four_point.hpp"
+
 namespace talus::app {
 
 struct BeamAnalysisOptions {
   std::string run_dir, out;
   double yield_smoothing = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's
-  double linear_strain = 0.002;  // E_b from σ = E_b ε for 0 < ε <= this (the source's)
+  double linear_strain = analysis::kFourPointLinearStrain;            // E_b over 0 < ε <= this
   bool quiet = false;
 };
 

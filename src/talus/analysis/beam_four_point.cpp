@@ -117,6 +117,30 @@ YieldPoint yield_from_curvature(std::span<const double> strain, std::span<const 
   return yp;
 }
 
+nlohmann::json four_point_curve(std::span<const double> strain, std::span<const double> stress,
+                                double linear_strain, double yield_smoothing) {
+  nlohmann::json j;
+  j["largest_strain"] = *std::max_element(strain.begin(), strain.end());
+  const auto top = std::max_element(stress.begin(), stress.end());
+  j["largest_stress"] = *top;
+  j["strain_at_largest_stress"] = strain[top - stress.begin()];
+  try {
+    const SmallStrainFit fit = fit_small_strain(strain, stress, linear_strain);
+    j["youngs_modulus"] = fit.modulus;
+    j["fit_points"] = fit.points;
+    j["fit_r2"] = fit.r2;
+  } catch (const InputError& e) {
+    j["fit_error"] = e.what();
+  }
+  const YieldPoint yp = yield_from_curvature(strain, stress, yield_smoothing);
+  j["yield_found"] = yp.found;
+  if (yp.found) {
+    j["yield_strength"] = yp.stress;
+    j["yield_strain"] = yp.strain;
+  }
+  return j;
+}
+
 FourPointObserver::FourPointObserver(std::filesystem::path out, const dem::DemScenario& sc,
                                      const dem::DemSystem<3>& s)
     : out_(std::move(out)) {
@@ -179,33 +203,15 @@ nlohmann::json FourPointObserver::finish() const {
   j["height"] = height_;
   if (b_.bending_friction) j["bending_friction"] = *b_.bending_friction;
   if (strain_.empty()) return j;
-  j["largest_strain"] = *std::max_element(strain_.begin(), strain_.end());
-  const auto top = std::max_element(stress_.begin(), stress_.end());
-  j["largest_stress"] = *top;
-  j["strain_at_largest_stress"] = strain_[top - stress_.begin()];
+  j.update(four_point_curve(strain_, stress_, kFourPointLinearStrain, b_.yield_smoothing));
   // The same curve with the membrane's rest length, height and width, as the
   // source computes it (its supports are at the ends of a beam that the
   // vacuum shrinks a little): σ scales by L / (h² t), E = σ/ε by L³ / (h³ t).
   const double l = nominal_.x() / span_, hr = height_ / nominal_.z(), tr = width_ / nominal_.y();
-  const double stress_scale = l * hr * hr * tr, modulus_scale = l * l * l * hr * hr * hr * tr;
-  // The source's limit of the linear part (§5.3.2).
-  constexpr double kLinearStrain = 0.002;
-  try {
-    const SmallStrainFit fit = fit_small_strain(strain_, stress_, kLinearStrain);
-    j["youngs_modulus"] = fit.modulus;
-    j["fit_points"] = fit.points;
-    j["fit_r2"] = fit.r2;
-    j["youngs_modulus_nominal"] = fit.modulus * modulus_scale;
-  } catch (const InputError& e) {
-    j["fit_error"] = e.what();
-  }
-  const YieldPoint yp = yield_from_curvature(strain_, stress_, b_.yield_smoothing);
-  j["yield_found"] = yp.found;
-  if (yp.found) {
-    j["yield_strength"] = yp.stress;
-    j["yield_strain"] = yp.strain;
-    j["yield_strength_nominal"] = yp.stress * stress_scale;
-  }
+  if (j.contains("youngs_modulus"))
+    j["youngs_modulus_nominal"] = j["youngs_modulus"].get<double>() * l * l * l * hr * hr * hr * tr;
+  if (j["yield_found"].get<bool>())
+    j["yield_strength_nominal"] = j["yield_strength"].get<double>() * l * hr * hr * tr;
   return j;
 }
 

@@ -51,6 +51,17 @@ struct YieldPoint {
 YieldPoint yield_from_curvature(std::span<const double> strain, std::span<const double> stress,
                                 double width);
 
+// The source's limit of the linear part of σ(ε) (§5.3.2).
+inline constexpr double kFourPointLinearStrain = 0.002;
+
+// What a σ(ε) curve yields, as the summary and `talus analyse beam` report it:
+// largest_strain, largest_stress, strain_at_largest_stress; youngs_modulus,
+// fit_points, fit_r2 of fit_small_strain up to linear_strain (fit_error when
+// it throws); yield_found, yield_strength, yield_strain of
+// yield_from_curvature. Needs one sample or more.
+nlohmann::json four_point_curve(std::span<const double> strain, std::span<const double> stress,
+                                double linear_strain, double yield_smoothing);
+
 class FourPointObserver final : public dem::DemObserver<3> {
  public:
   // Throws InputError when the scenario has no four-point [beam] or no
