@@ -1,14 +1,15 @@
 // The reduced granular beam in 4-point bending (scenarios/
-// granular_beam_4pt_small.toml, Götz 2024 §5.3 at 15 x 3 x 3 cm with 414
+// granular_beam_4pt_small.toml, Götz 2024 §5.3 at 15 x 3 x 3 cm with 657
 // grains), bent to ε = 0.006 only: about 20 s per run on one thread. Through
 // the driver, so that the grains' friction changes at bending_start
 // (protocol B: μ_init = 0.3, μ_p = 0.6). It checks what the rig must do and
 // what a slowly bent beam must show (measured values in the comments): the
 // rods follow their path exactly, the supports stay put, the friction is
 // μ_init before and μ_p after bending_start, without gravity the supports
-// carry the rods' push, and σ(ε) starts as a line.
+// carry the rods' push, σ(ε) starts as a line and the contacts take up load.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -107,6 +108,35 @@ TEST(BeamFourPointRun, ReducedBeamBendsUnderTheRods) {
       j["youngs_modulus"].get<double>(), j["fit_r2"].get<double>(),
       j["largest_strain"].get<double>(), push / rows, off / rows);
   EXPECT_LT(off / rows, 0.02 * push / rows);
+
+  // The force network (§5.3.4): the grains touch (z = 2 contacts / grains
+  // between 4 and 6 under the vacuum, §5.3.1), and below the yield strength
+  // bending loads the contacts: <F> and <|f_t|> grow from bending_start to the
+  // end (the source's Abb. 30 for σ < Y_b).
+  const std::size_t cc = csv.column("grain_contacts"), cm = csv.column("mean_contact_force"),
+                    cn = csv.column("mean_normal_force"),
+                    ctan = csv.column("mean_tangential_force"),
+                    cfr = csv.column("coulomb_fraction");
+  const auto start = std::find_if(csv.rows.begin(), csv.rows.end(),
+                                  [&](const auto& r) { return r[ct] >= sc.beam->bending_start; });
+  ASSERT_NE(start, csv.rows.end());
+  const auto& first = *start;
+  const auto& last = csv.rows.back();
+  const double grains = static_cast<double>(run->system.particles.size());
+  std::printf(
+      "z %.3f -> %.3f, <F> %.4g -> %.4g N, <f_n> %.4g -> %.4g N, <|f_t|> %.4g -> %.4g N, "
+      "at the Coulomb limit %.3f -> %.3f\n",
+      2 * first[cc] / grains, 2 * last[cc] / grains, first[cm], last[cm], first[cn], last[cn],
+      first[ctan], last[ctan], first[cfr], last[cfr]);
+  EXPECT_GT(2 * first[cc] / grains, 4.0);
+  EXPECT_LT(2 * first[cc] / grains, 6.5);
+  EXPECT_GT(last[cm], first[cm]);
+  EXPECT_GT(last[ctan], first[ctan]);
+  for (const auto& r : csv.rows) {
+    ASSERT_GE(r[cfr], 0.0);
+    ASSERT_LE(r[cfr], 1.0);
+    ASSERT_LE(r[cn], r[cm] * (1 + 1e-12));  // |F| >= f_n
+  }
 }
 
 }  // namespace

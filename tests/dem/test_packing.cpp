@@ -208,6 +208,58 @@ TEST(Packing, GrowStopsAtJamming) {
   EXPECT_EQ(count_outside(box, result.particles), 0);
 }
 
+// A 4 x 2 x 2 cm box with edges rounded by 5 mm: the core box 3 x 1 x 1 cm swept by a 5 mm ball.
+Region rounded_box() {
+  Region r;
+  r.dimension = 3;
+  r.box_min = Vec3(-0.02, -0.01, -0.01);
+  r.box_max = Vec3(0.02, 0.01, 0.01);
+  r.edge_radius = 0.005;
+  return r;
+}
+
+TEST(Packing, RoundedBoxGeometry) {
+  const Region box = rounded_box();
+  // Core 30 x 10 x 10 mm, e = 5 mm: 3000 + 2*5*(300 + 100 + 300) + pi*25*50 + (4/3) pi 125
+  // = 10000 + 3926.99 + 523.60 = 14450.5896 mm^3 (Steiner's formula for a box).
+  EXPECT_NEAR(box.area_or_volume(), 14450.5896e-9, 1e-13);
+  // The rounded box tends to the sharp box as e -> 0 and to a ball for a cube of side 2e.
+  Region sharp = box;
+  sharp.edge_radius = 1e-9;
+  EXPECT_NEAR(sharp.area_or_volume(), 16e-6, 1e-13);
+  Region ball = box_3d(0.02);
+  ball.edge_radius = 0.01;
+  EXPECT_NEAR(ball.area_or_volume(), 4.0 / 3.0 * M_PI * 1e-6, 1e-15);
+  // On a flat face the distance is the box's: 4 mm from the top face above the core.
+  EXPECT_TRUE(box.contains(Vec3(0.0, 0.0, 0.006), 0.0039));
+  EXPECT_FALSE(box.contains(Vec3(0.0, 0.0, 0.006), 0.0041));
+  // At a corner of the sharp box the rounded one is e(sqrt 3 - 1) = 3.66 mm away inwards: a
+  // point 1 mm inside along the diagonal is outside the rounded box, one 4.7 mm inside is 1 mm in.
+  const Vec3 corner(0.02, 0.01, 0.01), diagonal = Vec3(1, 1, 1).normalized();
+  EXPECT_FALSE(box.contains(corner - 0.001 * diagonal, 0.0));
+  EXPECT_TRUE(box.contains(corner - (0.005 * std::sqrt(3.0) - 0.004 + 1e-6) * diagonal, 0.001));
+  EXPECT_FALSE(box.contains(corner - (0.005 * std::sqrt(3.0) - 0.004 - 1e-6) * diagonal, 0.001));
+}
+
+TEST(Packing, GrowInRoundedBoxStaysInsideTheRounding) {
+  const Region box = rounded_box();
+  const GrowResult result = grow_packing(box, kRmin, kRmax, 0.5, 600, 4);
+  EXPECT_FALSE(result.jammed);
+  // The fraction is of the rounded volume, not of the enclosing box.
+  EXPECT_NEAR(porosity(box, result.particles), 0.5, 1e-9);
+  const OverlapStats stats = overlap_stats(box, result.particles);
+  EXPECT_EQ(stats.overlapping_pairs, 0);
+  EXPECT_LE(stats.max_wall_penetration, 0.0);
+  EXPECT_EQ(count_outside(box, result.particles), 0);
+  // Grains reach into the rounded edges: some lie where the sharp box's edge region would be.
+  int in_edges = 0;
+  for (const PackedParticle& p : result.particles) {
+    const Vec3 a = p.position.cwiseAbs();
+    in_edges += (a.y() > 0.005 && a.z() > 0.005) || (a.x() > 0.015 && a.y() > 0.005);
+  }
+  EXPECT_GT(in_edges, 0);
+}
+
 TEST(Packing, ShrinkRadiiIsExact) {
   std::vector<PackedParticle> particles = {{Vec3(1, 1, 0), 1.0}, {Vec3(3, 1, 0), 0.5}};
   shrink_radii(particles, 0.03);

@@ -77,7 +77,8 @@ TEST(BeamScenario, FourPointParsesAndDerivesTheRodsTravel) {
     EXPECT_DOUBLE_EQ(*b.bending_friction, 0.3);
     // Source eq. 44 for ε = 0.08 on the 15 cm long, 3 cm high beam.
     EXPECT_NEAR(b.rod_travel, 0.08 * 23 * 0.15 * 0.15 / (108 * 0.03), 1e-15);
-    EXPECT_DOUBLE_EQ(b.yield_smoothing, 0.002);  // max_strain / 40
+    EXPECT_DOUBLE_EQ(b.yield_smoothing, 0.002);             // max_strain / 40
+    EXPECT_DOUBLE_EQ(s.sources.at(0).edge_radius, 0.0065);  // grains grown in the rounded box
     // 10 mm/s after a 20 ms ramp: half the ramp is lost.
     EXPECT_NEAR(b.end(), 0.06 + b.rod_travel / 0.01 + 0.01, 1e-12);
     EXPECT_LE(b.end(), s.run.duration);
@@ -138,6 +139,12 @@ INSTANTIATE_TEST_SUITE_P(
                           "snapshot_interval = 0.01\ncheckpoint_interval = 0.05"),
                      "membrane = \"beam\"", "membrane = \"beam\" # <-"),
                 "membrane", "checkpoints of [beam] runs are not supported"},
+        BadCase{"edge_radius_beyond_half_side",
+                edit(kFour, "edge_radius = 0.0065", "edge_radius = 0.015 # <-"), "edge_radius",
+                "at most half the box's smallest side"},
+        BadCase{"edge_radius_negative",
+                edit(kFour, "edge_radius = 0.0065", "edge_radius = -0.001 # <-"), "edge_radius",
+                "a positive number"},
         BadCase{"unknown_test", edit(kFour, "test = \"four_point\"", "test = \"five_point\" # <-"),
                 "test", "four_point"},
         BadCase{"load_steps_in_four_point",

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "talus/analysis/beam.hpp"
+#include "talus/analysis/force_network.hpp"
 #include "talus/core/error.hpp"
 
 namespace talus::analysis {
@@ -154,7 +155,9 @@ FourPointObserver::FourPointObserver(std::filesystem::path out, const dem::DemSc
   csv_ = std::make_unique<io::CsvSeries>(
       out_ / "beam.csv",
       std::vector<std::string>{"time", "rod_travel", "rod_force", "bottom_centre_z", "deflection",
-                               "strain", "stress", "support_reaction_z", "kinetic_energy"},
+                               "strain", "stress", "support_reaction_z", "kinetic_energy",
+                               "grain_contacts", "mean_contact_force", "mean_normal_force",
+                               "mean_tangential_force", "coulomb_fraction"},
       false);
 }
 
@@ -189,7 +192,10 @@ void FourPointObserver::on_series(const dem::DemRun<3>& run) {
   // The supports' part of the fixed particles' reaction (last step): the rods hold -F.
   const double support = mb.reaction.z() + rig.rod_force;
   const double ke = dem::kinetic_energy(s.particles) + dem::membrane::kinetic_energy(mb);
-  csv_->row({s.time, b_.rod_travel_at(s.time), force, z, dz, eps, sigma, support, ke});
+  const ForceNetwork net = force_network(run.stepper->pair_contact_forces());
+  csv_->row({s.time, b_.rod_travel_at(s.time), force, z, dz, eps, sigma, support, ke,
+             static_cast<double>(net.contacts), net.mean_force, net.mean_normal,
+             net.mean_tangential, net.coulomb_fraction});
 }
 
 nlohmann::json FourPointObserver::finish() const {

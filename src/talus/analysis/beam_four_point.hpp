@@ -11,7 +11,9 @@
 // The observer records, at each series time, into <out>/beam.csv: time, the
 // rods' travel and their mean force since the previous row, the mean z of the
 // measured bottom-centre particles, Δz (from bending_start on), ε, σ, the
-// supports' reaction z and the kinetic energy of grains and membrane. L, h and
+// supports' reaction z, the kinetic energy of grains and membrane and the
+// grains' force network (analysis/force_network.hpp: contacts, <F>, <f_n>,
+// <|f_t|>, the fraction within 5 % of the Coulomb limit). L, h and
 // t are the beam's as it stands at bending_start: the span between the
 // supports' centroids and the section between opposite faces (the vacuum
 // shrinks it; the summary gives E_b and Y_b with the rest size too, as the

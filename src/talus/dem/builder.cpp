@@ -81,6 +81,7 @@ Region region_of(const ParticleSourceParams& s, int dim) {
   reg.cylinder_radius = s.cylinder_radius;
   reg.shell_inner_radius = s.shell_inner_radius;
   reg.shell_outer_radius = s.shell_outer_radius;
+  reg.edge_radius = s.edge_radius;
   return reg;
 }
 

@@ -160,7 +160,9 @@ struct Walls<2> {
 // A cylinder keeps the two z faces (4, 5) and replaces the four side faces by its mantle (face 6).
 // A spherical shell has only its outer sphere (face 7) and inner sphere (face 8): the springs act
 // along the radius, and the inner one is the only non-convex boundary, whose spring is still
-// exact since a ball touches a sphere in one point.
+// exact since a ball touches a sphere in one point. A box with rounded edges is one face (9): the
+// distance to the box shrunk by the edge radius, less that radius (convex, so one spring along
+// the gradient is exact).
 template <>
 struct Walls<3> {
   using V = Vec<3>;
@@ -169,8 +171,10 @@ struct Walls<3> {
   Eigen::Vector2d axis = Eigen::Vector2d::Zero();
   double outer = 0.0, inner = 0.0;  // outer > 0: spherical shell about `centre`
   V centre = V::Zero();
+  double edge = 0.0;  // > 0: the box's edges and corners rounded with this radius
   Walls(const Region& region, const Vec3& origin, double unit)
       : lo((region.box_min - origin) / unit), hi((region.box_max - origin) / unit) {
+    edge = region.edge_radius / unit;
     if (region.cylinder_radius > 0) {
       radius = region.cylinder_radius / unit;
       axis = 0.5 * (lo + hi).head<2>();
@@ -181,9 +185,30 @@ struct Walls<3> {
       centre = 0.5 * (lo + hi);
     }
   }
-  int first_face() const { return outer > 0 ? 7 : radius > 0 ? 4 : 0; }
-  int last_face() const { return outer > 0 ? 9 : radius > 0 ? 7 : 6; }
+  int first_face() const { return edge > 0 ? 9 : outer > 0 ? 7 : radius > 0 ? 4 : 0; }
+  int last_face() const { return edge > 0 ? 10 : outer > 0 ? 9 : radius > 0 ? 7 : 6; }
+  // The rounded box: signed distance (positive inside) and the inward direction.
+  double rounded_distance(const V& p, V* inward = nullptr) const {
+    const V core_lo = lo.array() + edge, core_hi = hi.array() - edge;
+    const V out = p - p.cwiseMax(core_lo).cwiseMin(core_hi);
+    const double len = out.norm();
+    if (len > 0) {
+      if (inward) *inward = -out / len;
+      return edge - len;
+    }
+    double best = kInf;  // inside the core: the nearest flat face
+    for (int face = 0; face < 6; ++face) {
+      const int a = face / 2;
+      const double d = face % 2 == 0 ? p[a] - lo[a] : hi[a] - p[a];
+      if (d < best) {
+        best = d;
+        if (inward) *inward = (face % 2 == 0 ? 1.0 : -1.0) * V::Unit(a);
+      }
+    }
+    return best;
+  }
   double face_distance(int face, const V& p) const {
+    if (face == 9) return rounded_distance(p);
     if (face == 7) return outer - (p - centre).norm();
     if (face == 8) return (p - centre).norm() - inner;
     if (face == 6) return radius - (p.head<2>() - axis).norm();
@@ -204,7 +229,11 @@ struct Walls<3> {
     for (int c = 0; c < n; ++c) {
       const double penetration = r - face_distance(ids[c], p);
       if (penetration <= 0) continue;
-      if (ids[c] == 7 || ids[c] == 8) {  // along the radius, inwards from the outer sphere
+      if (ids[c] == 9) {
+        V inward = V::Zero();
+        rounded_distance(p, &inward);
+        f += penetration * inward;
+      } else if (ids[c] == 7 || ids[c] == 8) {  // along the radius, inwards from the outer sphere
         const V d = p - centre;
         const double len = d.norm();
         if (len > 0) f += (ids[c] == 7 ? -penetration : penetration) / len * d;
@@ -234,6 +263,12 @@ struct Walls<3> {
       const Eigen::Vector2d d = p.head<2>() - axis;
       const double len = d.norm(), reach = std::max(0.0, radius - margin);
       if (len > reach) p.head<2>() = axis + (len > 0 ? Eigen::Vector2d(d * (reach / len)) : d);
+    }
+    if (edge > margin) {  // onto the rounded box shrunk by the margin (the clamp did the rest)
+      const V core = p.cwiseMax(V(lo.array() + edge)).cwiseMin(V(hi.array() - edge));
+      const V out = p - core;
+      const double len = out.norm(), reach = edge - margin;
+      if (len > reach) p = core + out * (reach / len);
     }
   }
 };
@@ -596,6 +631,12 @@ double Region::area_or_volume() const {
     return 4.0 / 3.0 * M_PI * (std::pow(shell_outer_radius, 3) - std::pow(shell_inner_radius, 3));
   if (dimension == 3 && cylinder_radius > 0)
     return M_PI * cylinder_radius * cylinder_radius * (box_max.z() - box_min.z());
+  if (dimension == 3 && edge_radius > 0) {  // the core box swept by a ball of the edge radius
+    const Vec3 c = (box_max - box_min).array() - 2 * edge_radius;
+    const double e = edge_radius;
+    return c.prod() + 2 * e * (c.x() * c.y() + c.y() * c.z() + c.z() * c.x()) +
+           M_PI * e * e * c.sum() + 4.0 / 3.0 * M_PI * e * e * e;
+  }
   if (dimension == 3) return (box_max - box_min).prod();
   if (polygon.empty()) return (box_max - box_min).head<2>().prod();
   return 0.5 * std::abs(twice_signed_area(polygon));

@@ -23,12 +23,14 @@ struct PackedParticle {
 // cylinder of that radius about the vertical axis through the centre of the box, from box_min.z to
 // box_max.z (the triaxial sample inside its membrane), or, when shell_outer_radius > 0, the
 // spherical shell shell_inner_radius < |x - c| < shell_outer_radius about the box centre c (the
-// hollow sphere; the box must contain the outer sphere).
+// hollow sphere; the box must contain the outer sphere), or, when edge_radius > 0, the box with
+// its edges and corners rounded by that radius (the inside of a rounded-box membrane).
 struct Region {
   int dimension = 2;
   std::vector<Vec3> polygon;
   double cylinder_radius = 0.0;
   double shell_inner_radius = 0.0, shell_outer_radius = 0.0;
+  double edge_radius = 0.0;
   Vec3 box_min = Vec3::Zero();
   Vec3 box_max = Vec3::Zero();
 

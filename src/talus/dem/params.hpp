@@ -126,10 +126,13 @@ struct ParticleSourceParams {
   // or (3D, cylinder_radius > 0) the vertical cylinder of that radius whose
   // bounding box is box_min..box_max, or (3D, shell_outer_radius > 0) the
   // spherical shell shell_inner_radius < |x - c| < shell_outer_radius about
-  // the centre c of the box (the hollow sphere's grains between two membranes).
+  // the centre c of the box (the hollow sphere's grains between two membranes),
+  // or (3D, edge_radius > 0) the box with rounded edges (inside a rounded-box
+  // membrane).
   std::vector<Vec3> polygon;
   double cylinder_radius = 0.0;
   double shell_inner_radius = 0.0, shell_outer_radius = 0.0;
+  double edge_radius = 0.0;
   double radius_min = 0.0, radius_max = 0.0;
   double porosity = 0.0;          // RandomFill target porosity
   double packing_fraction = 0.0;  // Grow target solid fraction

@@ -37,6 +37,9 @@ class Stepper final : public StepperBase<D> {
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b)
         coeffs_[a * m + b] = Model::make(s.contact, s.materials[a], s.materials[b]);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b)
+        friction_.push_back(pair_coefficients(s.contact, s.materials[a], s.materials[b]).friction);
     if constexpr (kHertzBlocks || kLinearBlocks)
       for (const auto& c : coeffs_) coeffs_law_.push_back(c.law);
     kuen_ = KuenRolling(s.contact, s.gravity.norm());
@@ -123,6 +126,25 @@ class Stepper final : public StepperBase<D> {
     if constexpr (D == 3)
       if (membranes_) best = std::min(best, membranes_->internal_time_step(s_));
     return best;
+  }
+
+  std::vector<PairContactForce> pair_contact_forces() const override {
+    const auto& p = s_.particles;
+    const auto& nl = s_.neighbours;
+    std::vector<PairContactForce> out;
+    for (std::size_t k = 0; k < nl.pairs.size(); ++k) {
+      const int i = nl.pairs[k].i, j = nl.pairs[k].j;
+      const Vec d = p.x[i] - p.x[j];
+      const double d2 = d.squaredNorm(), rs = p.r[i] + p.r[j];
+      if (d2 >= rs * rs) continue;
+      const auto pk = pair_kinematics<D, Model::needs_inertia>(p, i, j, d, d2);
+      const int pair_material = p.material[i] * n_materials_ + p.material[j];
+      ContactHistory<D> h{nl.pair_shear[k], nl.pair_roll[k]};
+      ContactForce<D> cf;
+      Model::compute(coeffs_[pair_material], pk.kin, h, 0.0, cf);
+      out.push_back({i, j, cf.fn, cf.ft.norm(), friction_[pair_material]});
+    }
+    return out;
   }
 
  private:
@@ -227,9 +249,12 @@ class Stepper final : public StepperBase<D> {
   static double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
   // Moves walls to the current time; true when a wall appeared or vanished.
+  // (A run without walls once counted as never set up here, so it rebuilt the
+  // neighbour list every step: hence the flag, not an empty primitive list.)
   bool update_walls(bool force) {
     bool changed = false;
-    if (force || s_.primitives.empty()) {
+    if (force || !walls_set_up_) {
+      walls_set_up_ = true;
       s_.primitives.clear();
       s_.primitive_wall.clear();
       active_.clear();
@@ -582,14 +607,16 @@ class Stepper final : public StepperBase<D> {
   DemSystem<D>& s_;
   int n_materials_ = 0;
   std::vector<typename Model::Coeffs> coeffs_;
+  std::vector<double> friction_;  // per material pair, for pair_contact_forces
   ThreadPartition<D> partition_;
   int64_t force_pass_ = 0;  // counts the force computations
   std::vector<Vec3> wall_acc_, pivots_;
   std::vector<char> moving_, active_;
   int64_t pair_touching_ = 0, wall_touching_ = 0;
-  bool step_open_ = false;    // a step's forces are done, its bookkeeping is not
-  double max_moved_ = 0.0;    // squared, largest displacement since the last build
-  std::exception_ptr error_;  // raised inside the parallel region, rethrown outside
+  bool walls_set_up_ = false;  // primitives and active_ hold every wall
+  bool step_open_ = false;     // a step's forces are done, its bookkeeping is not
+  double max_moved_ = 0.0;     // squared, largest displacement since the last build
+  std::exception_ptr error_;   // raised inside the parallel region, rethrown outside
   KuenRolling kuen_;
   std::unique_ptr<membrane::MembraneStep> membranes_;  // 3D runs with membranes only
 };

@@ -3,10 +3,19 @@
 // the per-contact work is inlined; the scenario picks the model once, through
 // make_stepper, and the run loop calls advance() in chunks.
 #include <memory>
+#include <vector>
 
 #include "talus/dem/system.hpp"
 
 namespace talus::dem {
+
+// The force of one touching particle pair in the current state.
+struct PairContactForce {
+  int i = 0, j = 0;         // particle indices (the current, cell-sorted order)
+  double normal = 0.0;      // f_n along the normal, > 0 pushes the pair apart
+  double tangential = 0.0;  // |f_t|
+  double friction = 0.0;    // the pair's Coulomb coefficient (|f_t| <= friction |f_n|)
+};
 
 template <int D>
 class StepperBase {
@@ -24,6 +33,10 @@ class StepperBase {
   // at v_ref (Hertz laws); PFC's sqrt(m/k) for linear contacts; divided by
   // sqrt(2D) for the 2D contacts a particle has in a dense packing.
   virtual double critical_time_step(double v_ref) const = 0;
+  // The forces of the touching particle pairs (force-network analysis; not a
+  // hot path): the contact law evaluated on a copy of each pair's history
+  // without advancing it, so the state is left as it was.
+  virtual std::vector<PairContactForce> pair_contact_forces() const = 0;
 };
 
 template <int D>

@@ -12,9 +12,9 @@ namespace {
 using dem::SourceKind;
 
 const std::vector<std::string_view> kSourceKeys = {
-    "list",    "box",        "spacing",    "radius",   "jitter",
-    "polygon", "radius_min", "radius_max", "porosity", "packing_fraction",
-    "shrink",  "count",      "file",       "cylinder", "shell"};
+    "list",       "box",        "spacing",  "radius",           "jitter", "polygon",
+    "radius_min", "radius_max", "porosity", "packing_fraction", "shrink", "count",
+    "file",       "cylinder",   "shell",    "edge_radius"};
 
 dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_material,
                                 const DemContext& ctx) {
@@ -32,10 +32,10 @@ dem::ParticleSpec read_particle(TomlReader& r, const std::string& source_materia
   return p;
 }
 
-// A box, in 2D a polygon (stored counter-clockwise, with its bounding box), in
-// 3D a vertical cylinder {center (of its base), radius, height} (stored as its
-// bounding box and radius) or a spherical shell {center, inner_radius,
-// outer_radius} (stored as the outer sphere's bounding box and both radii).
+// A box (in 3D optionally with edges rounded by edge_radius), in 2D a polygon (stored
+// counter-clockwise, with its bounding box), in 3D a vertical cylinder {center (of its base),
+// radius, height} (stored as its bounding box and radius) or a spherical shell {center,
+// inner_radius, outer_radius} (stored as the outer sphere's bounding box and both radii).
 void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& ctx) {
   const int given = r.has("box") + r.has("polygon") + r.has("cylinder") + r.has("shell");
   if (given != 1) {
@@ -69,6 +69,13 @@ void read_region(TomlReader& r, dem::ParticleSourceParams& s, const DemContext& 
   }
   if (r.has("box")) {
     read_box(r, "box", ctx, s.box_min, s.box_max);
+    if (r.has("edge_radius")) {  // the inside of a rounded-box membrane
+      if (ctx.dimension != 3) r.fail("edge_radius", "rounded boxes are for 3D runs");
+      s.edge_radius = required_number_in(r, "edge_radius", positive());
+      const double half = 0.5 * (s.box_max - s.box_min).minCoeff();
+      r.expect(s.edge_radius <= half, "edge_radius",
+               fmt::format("at most half the box's smallest side ({} m)", half));
+    }
     return;
   }
   if (ctx.dimension != 2) r.fail("polygon", "polygons are for 2D runs; use 'box' in 3D");

@@ -192,6 +192,7 @@ class Writer {
                {"height", s.box_max.z() - s.box_min.z()}};
     } else if (s.kind == SourceKind::Lattice || (fill && s.polygon.empty())) {
       t["box"] = box(s.box_min, s.box_max);
+      if (s.edge_radius > 0) t["edge_radius"] = s.edge_radius;
     }
     if (fill && !s.polygon.empty()) {
       Json polygon = Json::array();
