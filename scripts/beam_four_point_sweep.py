@@ -56,9 +56,10 @@ def run_one(a, protocol, mu, seed):
 
 
 def fit_eq46(mu, y):
-    """(Y0, Yinf, a) minimising the squared residual; None with fewer than 3 points."""
+    """(Y0, Yinf, a) minimising the squared residual; None with fewer than 4 points (three
+    parameters through three points say nothing: protocol B over 0.3, 0.6, 1.2 gave Y0 < 0)."""
     mu, y = np.asarray(mu), np.asarray(y)
-    if len(mu) < 3:
+    if len(mu) < 4:
         return None
     best = None
     for a in np.geomspace(0.05, 500, 2000):
@@ -118,7 +119,7 @@ def main():
                       f"Yinf = {fit[1] / 1e3:.2f} kPa, a = {fit[2]:.2f} "
                       f"(source Y_b, E_p = 100 MPa: A 20.63, 96.15, 6.67; B 35.65, 119.41, 2.85)")
             else:
-                print(f"eq. 46 on {key}, protocol {p}: fewer than 3 friction values with a value, no fit")
+                print(f"eq. 46 on {key}, protocol {p}: fewer than 4 friction values with a value, no fit")
     if a.plot:
         plot(a.plot, rows, fits)
 
