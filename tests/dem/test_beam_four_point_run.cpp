@@ -110,7 +110,7 @@ TEST(BeamFourPointRun, ReducedBeamBendsUnderTheRods) {
   EXPECT_LT(off / rows, 0.02 * push / rows);
 
   // The force network (§5.3.4): the grains touch (z = 2 contacts / grains
-  // between 4 and 6 under the vacuum, §5.3.1), and below the yield strength
+  // between 4 and 6 under the vacuum, the source's range in §5.3.1), and below the yield strength
   // bending loads the contacts: <F> and <|f_t|> grow from bending_start to the
   // end (the source's Abb. 30 for σ < Y_b). Measured: z 5.14 -> 5.13,
   // <F> 2.085 -> 2.160 N, <|f_t|> 0.358 -> 0.397 N, at the limit 0 -> 0.026.
@@ -130,7 +130,7 @@ TEST(BeamFourPointRun, ReducedBeamBendsUnderTheRods) {
       2 * first[cc] / grains, 2 * last[cc] / grains, first[cm], last[cm], first[cn], last[cn],
       first[ctan], last[ctan], first[cfr], last[cfr]);
   EXPECT_GT(2 * first[cc] / grains, 4.0);
-  EXPECT_LT(2 * first[cc] / grains, 6.5);
+  EXPECT_LT(2 * first[cc] / grains, 6.0);
   EXPECT_GT(last[cm], first[cm]);
   EXPECT_GT(last[ctan], first[ctan]);
   for (const auto& r : csv.rows) {

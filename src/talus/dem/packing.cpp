@@ -187,10 +187,14 @@ struct Walls<3> {
   }
   int first_face() const { return edge > 0 ? 9 : outer > 0 ? 7 : radius > 0 ? 4 : 0; }
   int last_face() const { return edge > 0 ? 10 : outer > 0 ? 9 : radius > 0 ? 7 : 6; }
+  // The rounded box is the core box (the box shrunk by the edge radius) swept by a ball of that
+  // radius: p's nearest point in the core.
+  V nearest_in_core(const V& p) const {
+    return p.cwiseMax(V(lo.array() + edge)).cwiseMin(V(hi.array() - edge));
+  }
   // The rounded box: signed distance (positive inside) and the inward direction.
   double rounded_distance(const V& p, V* inward = nullptr) const {
-    const V core_lo = lo.array() + edge, core_hi = hi.array() - edge;
-    const V out = p - p.cwiseMax(core_lo).cwiseMin(core_hi);
+    const V out = p - nearest_in_core(p);
     const double len = out.norm();
     if (len > 0) {
       if (inward) *inward = -out / len;
@@ -265,7 +269,7 @@ struct Walls<3> {
       if (len > reach) p.head<2>() = axis + (len > 0 ? Eigen::Vector2d(d * (reach / len)) : d);
     }
     if (edge > margin) {  // onto the rounded box shrunk by the margin (the clamp did the rest)
-      const V core = p.cwiseMax(V(lo.array() + edge)).cwiseMin(V(hi.array() - edge));
+      const V core = nearest_in_core(p);
       const V out = p - core;
       const double len = out.norm(), reach = edge - margin;
       if (len > reach) p = core + out * (reach / len);

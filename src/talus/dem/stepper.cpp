@@ -34,12 +34,13 @@ class Stepper final : public StepperBase<D> {
     const int m = static_cast<int>(s.materials.size());
     n_materials_ = m;
     coeffs_.resize(m * m);
+    friction_.resize(m * m);
     for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b)
+      for (int b = 0; b < m; ++b) {
         coeffs_[a * m + b] = Model::make(s.contact, s.materials[a], s.materials[b]);
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b)
-        friction_.push_back(pair_coefficients(s.contact, s.materials[a], s.materials[b]).friction);
+        friction_[a * m + b] =
+            pair_coefficients(s.contact, s.materials[a], s.materials[b]).friction;
+      }
     if constexpr (kHertzBlocks || kLinearBlocks)
       for (const auto& c : coeffs_) coeffs_law_.push_back(c.law);
     kuen_ = KuenRolling(s.contact, s.gravity.norm());
@@ -132,17 +133,14 @@ class Stepper final : public StepperBase<D> {
     const auto& p = s_.particles;
     const auto& nl = s_.neighbours;
     std::vector<PairContactForce> out;
+    PairKinematics<D> pk;
+    ContactForce<D> cf;
     for (std::size_t k = 0; k < nl.pairs.size(); ++k) {
+      ContactHistory<D> h{nl.pair_shear[k], nl.pair_roll[k]};  // a copy: left as it was
+      if (!evaluate_pair(k, h, 0.0, pk, cf)) continue;
       const int i = nl.pairs[k].i, j = nl.pairs[k].j;
-      const Vec d = p.x[i] - p.x[j];
-      const double d2 = d.squaredNorm(), rs = p.r[i] + p.r[j];
-      if (d2 >= rs * rs) continue;
-      const auto pk = pair_kinematics<D, Model::needs_inertia>(p, i, j, d, d2);
-      const int pair_material = p.material[i] * n_materials_ + p.material[j];
-      ContactHistory<D> h{nl.pair_shear[k], nl.pair_roll[k]};
-      ContactForce<D> cf;
-      Model::compute(coeffs_[pair_material], pk.kin, h, 0.0, cf);
-      out.push_back({i, j, cf.fn, cf.ft.norm(), friction_[pair_material]});
+      out.push_back(
+          {i, j, cf.fn, cf.ft.norm(), friction_[p.material[i] * n_materials_ + p.material[j]]});
     }
     return out;
   }
@@ -359,24 +357,33 @@ class Stepper final : public StepperBase<D> {
     p.permute(keep);
   }
 
-  // Kinematics and force of pair k; false when the pair does not touch.
-  TALUS_HOT bool pair_force(std::size_t k, PairResult<D>& out) {
-    auto& p = s_.particles;
-    auto& nl = s_.neighbours;
-    const auto& pair = nl.pairs[k];
-    const int i = pair.i, j = pair.j;
+  // Kinematics and force of pair k with the history h, advanced by dt; false
+  // when the pair does not touch (then h is not used).
+  TALUS_HOT bool evaluate_pair(std::size_t k, ContactHistory<D>& h, double dt,
+                               PairKinematics<D>& pk, ContactForce<D>& cf) const {
+    const auto& p = s_.particles;
+    const int i = s_.neighbours.pairs[k].i, j = s_.neighbours.pairs[k].j;
     const Vec d = p.x[i] - p.x[j];
     const double d2 = d.squaredNorm();
     const double rs = p.r[i] + p.r[j];
-    if (d2 >= rs * rs) {
+    if (d2 >= rs * rs) return false;
+    pk = pair_kinematics<D, Model::needs_inertia>(p, i, j, d, d2);
+    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], pk.kin, h, dt, cf);
+    return true;
+  }
+
+  // Kinematics and force of pair k, its history advanced; false when the pair
+  // does not touch (its history is reset).
+  TALUS_HOT bool pair_force(std::size_t k, PairResult<D>& out) {
+    auto& nl = s_.neighbours;
+    ContactHistory<D> h{nl.pair_shear[k], nl.pair_roll[k]};
+    PairKinematics<D> pk;
+    ContactForce<D> cf;
+    if (!evaluate_pair(k, h, s_.dt, pk, cf)) {
       nl.pair_shear[k] = zero_of<Vec>();
       if constexpr (Model::has_rolling) nl.pair_roll[k] = Space<D>::rot_zero();
       return false;
     }
-    const auto pk = pair_kinematics<D, Model::needs_inertia>(p, i, j, d, d2);
-    ContactForce<D> cf;
-    ContactHistory<D> h{nl.pair_shear[k], nl.pair_roll[k]};
-    Model::compute(coeffs_[p.material[i] * n_materials_ + p.material[j]], pk.kin, h, s_.dt, cf);
     nl.pair_shear[k] = h.shear;
     if constexpr (Model::has_rolling) nl.pair_roll[k] = h.roll;
     out = pair_result(pk, cf);
