@@ -16,6 +16,9 @@ over half the block's length" becomes a length that can be measured:
                  (c/c0 < 0.5); as a fraction of the block's length too;
   damaged_rear   the fraction of damaged points that started in the rear half
                  of the block (away from the impact);
+  damage_reach   how far back from the front 95 % of the damaged points
+                 started, as a fraction of the block's length (local damage
+                 near the impact: small; damage back to mid-length: about 0.5);
   cracked/damaged fractions of all points (c/c0 < 1, c/c0 < 0.5).
 """
 import argparse
@@ -59,6 +62,9 @@ def crack_metrics(x0, ratio, spacing, corner_z, band):
         "crack_length_fraction": crack * spacing / length,
         "damaged_rear_fraction":
             float(np.count_nonzero(damaged & (x0[:, 0] < mid)) / n_damaged) if n_damaged else 0.0,
+        "damage_reach_fraction":
+            float(np.percentile(front - x0[damaged, 0], 95.0) + 0.5 * spacing) / length
+            if n_damaged else 0.0,
     }
 
 
