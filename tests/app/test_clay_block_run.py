@@ -17,7 +17,7 @@ What is asserted, and why:
 The source's finer claim (a crack from the obstacle corner over half the weak block's length,
 only local damage in the strong one) is NOT asserted. The one set-up that showed it
 (scenarios/mpm_clay_block_runout*.toml, the block on the run-out meeting the obstacle square on)
-shows it on 2.5 cm cells at 0.30-0.45 m/s only; on 2 cm cells (0.35-0.7 m/s) no crack forms
+shows it on 2.5 cm cells at 0.30-0.45 m/s only; on 2 cm cells (0.35-1.0 m/s) no crack forms
 along the corner line in either block, on 4 cm cells (0.30-0.45 m/s) neither has more than a few
 damaged points (docs/validation.md "Clay block"), so a test of it would pin a grid artefact.
 
