@@ -21,6 +21,22 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def side_vz(meta, f):
+    """Mean v_z (mass-weighted, in units of f d) of the outer columns on the four sides, keyed
+    "-x", "+x", "-y", "+y": the cells beyond 2/3 of the grid's half-width from the axis, within
+    a band of 1/3 across. A flow tilted in x-z rises on one x side and sinks on the other."""
+    scale = meta["period"] / meta["mean_diameter"]
+    ax_x, ax_y = meta["axis"]
+    half = 0.5 * (meta["box"][3] - meta["box"][0])
+    out = {}
+    for name, u, v in (("x", f["x"] - ax_x, f["y"] - ax_y), ("y", f["y"] - ax_y, f["x"] - ax_x)):
+        for sign in (-1, 1):
+            sel = (sign * u > 2 * half / 3) & (np.abs(v) < half / 3)
+            vz = np.sum(f["mass_density"][sel] * f["vz"][sel]) / np.sum(f["mass_density"][sel])
+            out[f"{'-+'[sign > 0]}{name}"] = float(vz * scale)
+    return out
+
+
 def main():
     cg = sys.argv[1]
     title = sys.argv[2] if len(sys.argv) > 2 else ""
@@ -68,15 +84,8 @@ def main():
                  f"{meta['mean_speed_normalised']:.3f} f d\naxis column lower half "
                  f"{meta['axis_lower_vz_normalised']:+.3f} f d, upper half "
                  f"{meta['axis_upper_vz_normalised']:+.3f} f d", fontsize=10)
-    # Mean v_z (mass-weighted) of the outer columns on the four sides (|x| or |y| > R/3 of the
-    # grid's half-width 2/3, within a band of 1/3 across): a flow tilted in x-z rises on one
-    # x side and sinks on the other; printed, in units of f d.
-    half = 0.5 * (meta["box"][3] - meta["box"][0])
-    for name, u, v in (("x", f["x"] - ax_x, f["y"] - ax_y), ("y", f["y"] - ax_y, f["x"] - ax_x)):
-        for sign in (-1, 1):
-            sel = (sign * u > 2 * half / 3) & (np.abs(v) < half / 3)
-            vz_side = np.sum(f["mass_density"][sel] * f["vz"][sel]) / np.sum(f["mass_density"][sel])
-            print(f"side {'-+'[sign > 0]}{name}: mean v_z = {vz_side * scale:+.3f} f d")
+    for name, vz_side in side_vz(meta, f).items():
+        print(f"side {name}: mean v_z = {vz_side:+.3f} f d")
     path = os.path.join(cg, "velocity_rz.png")
     fig.savefig(path, dpi=110)
     print(path)

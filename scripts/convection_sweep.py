@@ -31,8 +31,11 @@ import os
 import subprocess
 import sys
 
+import numpy as np
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "plots"))
+from plot_coarse_grain import side_vz  # noqa: E402
 from talus_csv import read_columns  # noqa: E402
 
 
@@ -75,25 +78,24 @@ def main():
                         "--period", f"{a.period:.13g}", "--from", f"{a.t0:g}"], check=True,
                        stdout=subprocess.DEVNULL)
         cg = os.path.join(out, "coarse_grain")
-        plot = subprocess.run([sys.executable, os.path.join(HERE, "..", "plots", "plot_coarse_grain.py"),
-                               cg, f"{label} ({sets or 'as the file'})", a.vmax], check=True,
-                              capture_output=True, text=True).stdout
-        # plot_coarse_grain.py prints the mean v_z of the outer columns on the four sides.
-        side = {ln.split(":")[0].split()[1]: float(ln.split("=")[1].split()[0])
-                for ln in plot.splitlines() if ln.startswith("side ")}
+        subprocess.run([sys.executable, os.path.join(HERE, "..", "plots", "plot_coarse_grain.py"),
+                        cg, f"{label} ({sets or 'as the file'})", a.vmax], check=True,
+                       stdout=subprocess.DEVNULL)
         meta = json.load(open(os.path.join(cg, "coarse_grain.json")))
-        scale = meta["period"] / meta["mean_diameter"]
+        field = {k: np.array(v) for k, v in read_columns(os.path.join(cg, "field.csv")).items()}
+        side = side_vz(meta, field)
         wall = json.load(open(os.path.join(out, "summary.json"))).get("run", {})
-        rows.append((label, meta["intervals"], rz_strength(cg, scale), meta["mean_speed_normalised"],
-                     meta["axis_lower_vz_normalised"], meta["axis_upper_vz_normalised"],
-                     meta["axis_vz_normalised"], wall.get("loop_wall_s", float("nan")),
-                     0.5 * (side["-x"] - side["+x"]), 0.5 * (side["-y"] - side["+y"])))
+        rows.append([label, str(meta["intervals"]),
+                     f"{rz_strength(cg, meta['period'] / meta['mean_diameter']):.3f}",
+                     f"{meta['mean_speed_normalised']:.3f}",
+                     f"{meta['axis_lower_vz_normalised']:+.3f}", f"{meta['axis_upper_vz_normalised']:+.3f}",
+                     f"{meta['axis_vz_normalised']:+.3f}", f"{0.5 * (side['-x'] - side['+x']):+.3f}",
+                     f"{0.5 * (side['-y'] - side['+y']):+.3f}", f"{wall.get('loop_wall_s', float('nan')):.0f}"])
     print("| variant | periods averaged | rz_mean | field_mean | axis lower | axis upper | axis whole "
           "| side cell x | side cell y | loop wall [s] |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
-        print(f"| {r[0]} | {r[1]} | {r[2]:.3f} | {r[3]:.3f} | {r[4]:+.3f} | {r[5]:+.3f} | {r[6]:+.3f} "
-              f"| {r[8]:+.3f} | {r[9]:+.3f} | {r[7]:.0f} |")
+        print("| " + " | ".join(r) + " |")
 
 
 if __name__ == "__main__":
