@@ -8,7 +8,7 @@ The crack indicator is c/c0 of every material point (mpm.md: a crack is where
 c/c0 < 1, and only a point that lost cohesion can be a physical crack). The
 pattern is read in the block's reference configuration (each point at its
 first-snapshot position, matched by id), seen from above (x down the slope,
-z across), so that "a crack from the obstacle corner along the flow direction
+z across; a 2D plan-view run's y is its across), so that "a crack from the obstacle corner along the flow direction
 over half the block's length" becomes a length that can be measured:
   crack_length   along the band of initial z within B of the obstacle corner
                  line z = Z: the length, from the block's front backwards, over
@@ -82,6 +82,10 @@ def main():
     fields = ("id", "c_over_c0", "radius", "plastic_strain")
     xyz0, d0 = read_points(snaps[0][1], fields)
     xyz1, d1 = read_points(snaps[-1][1], fields)
+    # A 2D plan-view run (z = 0 everywhere): its y is across; no side view.
+    plan = not np.any(xyz0[:, 2])
+    if plan:
+        xyz0, xyz1 = xyz0[:, [0, 2, 1]], xyz1[:, [0, 2, 1]]
     start = np.empty((int(np.max(d0["id"])) + 1, 3))
     start[d0["id"].astype(int)] = xyz0
     x0, x1 = start[d1["id"].astype(int)], xyz1
@@ -93,11 +97,13 @@ def main():
 
     out = os.path.join(args.run, "plots")
     os.makedirs(out, exist_ok=True)
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
+    views = ((0, 2, "z0 across (m)"),) if plan else (
+        (0, 2, "z0 across (m)"), (0, 1, "y0 above the bed (m)"))
+    fig, ax = plt.subplots(1, len(views) + 1, figsize=(5 * len(views) + 5, 4.5))
     # Reference configuration, seen from above and from the side: the mean
     # c/c0 over each column of points (a crack through the height shows as a
     # low column; damage at the base alone only halves it).
-    for k, (a, b, label) in enumerate(((0, 2, "z0 across (m)"), (0, 1, "y0 above the bed (m)"))):
+    for k, (a, b, label) in enumerate(views):
         cols = {}
         for key, r in zip(map(tuple, np.round(x0[:, [a, b]] / spacing).astype(int)), ratio):
             cols.setdefault(key, []).append(r)
@@ -108,10 +114,11 @@ def main():
         ax[k].set(xlabel="x0 down the slope (m)", ylabel=label, aspect="equal")
     ax[0].axhline(args.corner_z, color="k", lw=0.8, ls="--")
     ax[0].set_title("start shape from above, mean c/c0")
-    ax[1].set_title("start shape from the side, mean c/c0")
+    if not plan:
+        ax[1].set_title("start shape from the side, mean c/c0")
     top = np.argsort(x1[:, 1])
-    ax[2].scatter(x1[top, 0], x1[top, 2], c=ratio[top], cmap="RdYlBu", vmin=0, vmax=1, s=4)
-    ax[2].set(title=f"t = {m['time']:.2f} s, seen from above", xlabel="x down the slope (m)",
+    ax[-1].scatter(x1[top, 0], x1[top, 2], c=ratio[top], cmap="RdYlBu", vmin=0, vmax=1, s=4)
+    ax[-1].set(title=f"t = {m['time']:.2f} s, seen from above", xlabel="x down the slope (m)",
               ylabel="z across (m)", aspect="equal")
     fig.colorbar(sc, ax=ax, label="c / c0 (crack where < 1)")
     png = os.path.join(out, "cracks.png")

@@ -194,6 +194,34 @@ TEST(MpmScenario, BundledColumnBuilds) {
 // The transfer, smoothing and checkpoint keys, and the [flume] of an MPM
 // scenario: parsed, round-tripped through the resolved file, bad
 // combinations refused with the key named.
+// The bundled plan-view clay block: its bed friction and normal gravity are
+// read, round-trip, and are refused in 3D or without a value.
+TEST(MpmScenario, PlanViewBed) {
+  const auto file = load_scenario_file(
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block_plan_strong.toml", {});
+  const auto sc = parse_mpm_scenario(file);
+  EXPECT_EQ(sc.dimension, 2);
+  EXPECT_EQ(sc.solver.basal_friction, 0.4);
+  EXPECT_EQ(sc.solver.bed_normal_gravity, 9.7727);
+  EXPECT_EQ(sc.materials[0].cohesion, 26.7e3);
+  const auto again = parse_mpm_scenario(load_scenario_text(mpm_scenario_to_toml(sc), "r.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
+  const std::string bed = "plan_view = { basal_friction = 0.4, normal_gravity = 9.8 }\n";
+  std::string in3d = edit(kBase, "dimension = 2", "dimension = 3");
+  in3d = edit(in3d, "gravity = [0, -10]", "gravity = [0, 0, -10]");
+  in3d = edit(in3d, "min = [0, 0]", "min = [0, 0, 0]");
+  in3d = edit(in3d, "max = [1, 0.5]", "max = [1, 0.5, 0.5]");
+  in3d = edit(in3d, "box = { min = [0, 0], max = [0.3, 0.2] }",
+              "box = { min = [0, 0, 0], max = [0.3, 0.2, 0.2] }");
+  parse_mpm_scenario(load_scenario_text(in3d, "3d.toml"));  // valid without the bed
+  expect_error(edit(in3d, "shape =", bed + "shape ="), "no plan_view in dimension = 3");
+  expect_error(edit(kBase, "shape =", "plan_view = { basal_friction = 0.4 }\nshape ="),
+               "'normal_gravity'");
+  expect_error(
+      edit(kBase, "shape =", "plan_view = { basal_friction = -1, normal_gravity = 9.8 }\nshape ="),
+      "'basal_friction'");
+}
+
 TEST(MpmScenario, TransferSmoothingCheckpointKeys) {
   const auto text =
       edit(kBase, "shape = \"cubic_bspline\"",

@@ -70,6 +70,13 @@ void read_run(TomlReader& r, mpm::MpmScenario& s, DemContext& ctx) {
   p.scheme = r.enumeration("scheme", kSchemes, p.scheme);
   read_transfer(r, p);
   p.local_damping = number_in(r, "local_damping", p.local_damping, between(0.0, 1.0, false, true));
+  if (auto bed = r.optional_table("plan_view")) {
+    r.expect(s.dimension == 2, "plan_view",
+             "no plan_view in dimension = 3 (a 3D run has its bed as a rigid body)");
+    p.basal_friction = required_number_in(*bed, "basal_friction", non_negative());
+    p.bed_normal_gravity = required_number_in(*bed, "normal_gravity", positive());
+    bed->finish();
+  }
   r.finish();
 }
 
@@ -371,6 +378,9 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
   if (p.transfer == mpm::Transfer::FlipPic) run["flip"] = p.flip;
   run["volumetric_smoothing"] = p.volumetric_smoothing;
   run["local_damping"] = p.local_damping;
+  if (p.bed_normal_gravity > 0.0)
+    run["plan_view"] = {{"basal_friction", p.basal_friction},
+                        {"normal_gravity", p.bed_normal_gravity}};
   J faces = J::object();
   for (int f = 0; f < 2 * dim; ++f) faces[kFaceKeys[f]] = detail::name_of(kFaces, s.grid.faces[f]);
   J grid = {{"min", point(s.grid.lo)},

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
-#include "talus/mpm/membrane_grid.hpp"
 #include "talus/mpm/apic.hpp"
+#include "talus/mpm/membrane_grid.hpp"
 #include "talus/mpm/smoothing.hpp"
 
 namespace talus::mpm {
@@ -144,6 +144,8 @@ void Solver<D>::step_with(double dt) {
   for (double m : particles.mass) mass_floor = std::max(mass_floor, m);
   mass_floor = 1e-12 * std::max(mass_floor, membrane_max_mass(membranes));
   const double alpha = params.local_damping;
+  // Velocity a node's bed friction can take away in this step.
+  const double bed_dv = params.basal_friction * params.bed_normal_gravity * dt;
 
   // 1. particles -> grid
   to_grid<Shape>(true);
@@ -165,7 +167,13 @@ void Solver<D>::step_with(double dt) {
       for (int d = 0; d < D; ++d)
         f[d] -= alpha * std::abs(f[d]) * (v[d] > 0 ? 1 : v[d] < 0 ? -1 : 0);
     grid.velocity_old[a] = v;
-    grid.velocity[a] = v + dt / m * f;
+    Vec trial = v + dt / m * f;
+    if (bed_dv > 0.0) {
+      // Friction opposes the trial sliding velocity; a node it would reverse sticks.
+      const double speed = trial.norm();
+      trial = speed <= bed_dv ? Vec::Zero().eval() : (trial * (1.0 - bed_dv / speed)).eval();
+    }
+    grid.velocity[a] = trial;
   }
   grid.constrain(grid.velocity_old);
   if (!rigid_bodies.empty()) {

@@ -37,6 +37,11 @@ struct SolverParams {
   double fixed_time_step = 0.0;  // > 0: use this instead of the CFL rule
   Vec3 gravity = Vec3::Zero();
   double gimp_half_width = 0.25;  // particle half-width over h (GIMP), <= 1/2
+  // 2D plan view of a mass sliding on a bed (depth-averaged, as van den Bout's
+  // model): Coulomb friction mu g_n per unit mass at every node, against the
+  // node's trial velocity and never reversing it. 0 = no bed.
+  double basal_friction = 0.0;
+  double bed_normal_gravity = 0.0;  // m/s^2, g cos(slope)
 };
 
 template <int D>
