@@ -249,6 +249,7 @@ int run_mpm_scenario(const mpm::MpmScenario& sc, const fs::path& out, const RunO
       sc.output.series_interval > 0 ? sc.output.series_interval : sc.duration / 200.0;
   control.snapshot_interval = sc.output.snapshots ? sc.output.snapshot_interval : -1.0;
   control.checkpoint_interval = sc.output.checkpoint_interval;
+  control.ke_blowup_factor = sc.ke_blowup_factor;
   RunSummary summary;
   summary.output = out;
   summary.setup_seconds = setup_s;

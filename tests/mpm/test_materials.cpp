@@ -189,6 +189,20 @@ TEST(MpmCohesionLoss, FallsWithDilationWhileYielding) {
   EXPECT_LE(dp.yield(s.stress, s.cohesion), 1e-6);
 }
 
+// Crack-band form (materials.hpp): a band one cell wide is open at w_c =
+// 2 eps_c h, so eps_c = w_c / (2 h); without w_c the volume strain is used as
+// given whatever the cell.
+TEST(MpmCohesionLoss, CrackBandOpeningSetsCriticalStrainPerCell) {
+  auto params = soil(MaterialModel::DruckerPrager, 27, 18.3e3);
+  params.critical_volume_strain = 0.03;
+  EXPECT_EQ(critical_volume_strain(params, 0.01), 0.03);
+  EXPECT_EQ(critical_volume_strain(params, 0.005), 0.03);
+  params.critical_opening = 2e-4;
+  EXPECT_DOUBLE_EQ(critical_volume_strain(params, 0.01), 0.01);
+  EXPECT_DOUBLE_EQ(critical_volume_strain(params, 0.005), 0.02);
+  EXPECT_DOUBLE_EQ(critical_volume_strain(params, 0.04), 0.0025);
+}
+
 // Objectivity: a stressed point spun rigidly (velocity gradient = spin) keeps
 // its invariants and its stress turns with it, sigma = R sigma0 R^T.
 template <class Model>

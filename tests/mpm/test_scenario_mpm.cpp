@@ -194,8 +194,9 @@ TEST(MpmScenario, BundledColumnBuilds) {
 // The transfer, smoothing and checkpoint keys, and the [flume] of an MPM
 // scenario: parsed, round-tripped through the resolved file, bad
 // combinations refused with the key named.
-// The bundled plan-view clay block: its bed friction and normal gravity are
-// read, round-trip, and are refused in 3D or without a value.
+// The bundled plan-view clay block: its bed friction, normal gravity and
+// crack-band opening are read and round-trip; the bed is refused in 3D or
+// without a value, the opening beside a critical volume strain.
 TEST(MpmScenario, PlanViewBed) {
   const auto file = load_scenario_file(
       std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block_plan_strong.toml", {});
@@ -215,6 +216,10 @@ TEST(MpmScenario, PlanViewBed) {
               "box = { min = [0, 0, 0], max = [0.3, 0.2, 0.2] }");
   parse_mpm_scenario(load_scenario_text(in3d, "3d.toml"));  // valid without the bed
   expect_error(edit(in3d, "shape =", bed + "shape ="), "no plan_view in dimension = 3");
+  EXPECT_EQ(sc.materials[0].critical_opening, 2e-4);
+  expect_error(edit(kBase, "critical_volume_strain = 0.01",
+                    "critical_volume_strain = 0.01\ncritical_opening = 2e-4"),
+               "either critical_volume_strain or critical_opening");
   expect_error(edit(kBase, "shape =", "plan_view = { basal_friction = 0.4 }\nshape ="),
                "'normal_gravity'");
   expect_error(

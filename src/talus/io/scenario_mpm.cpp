@@ -57,6 +57,7 @@ void read_run(TomlReader& r, mpm::MpmScenario& s, DemContext& ctx) {
   r.expect(dimension == 2 || dimension == 3, "dimension", "2 or 3");
   s.dimension = ctx.dimension = static_cast<int>(dimension);
   s.duration = required_number_in(r, "duration", positive());
+  s.ke_blowup_factor = number_in(r, "ke_blowup_factor", s.ke_blowup_factor, non_negative());
   auto& p = s.solver;
   if (r.is_string("time_step")) {
     r.required_enum<int>("time_step", {{"auto", 0}});
@@ -122,6 +123,10 @@ mpm::MaterialParams read_material(TomlReader& r) {
              "an angle in [0, friction_angle] degrees");
     m.cohesion = number_in(r, "cohesion", 0.0, non_negative());
     m.critical_volume_strain = number_in(r, "critical_volume_strain", 0.0, non_negative());
+    m.critical_opening = number_in(r, "critical_opening", 0.0, non_negative());
+    if (m.critical_opening > 0.0 && r.has("critical_volume_strain"))
+      r.fail("critical_opening",
+             "either critical_volume_strain or critical_opening (the crack-band form), not both");
     if (m.model == MaterialModel::DruckerPrager)
       m.tension_cutoff = number_in(r, "tension_cutoff", m.tension_cutoff, non_negative());
     else
@@ -130,7 +135,7 @@ mpm::MaterialParams read_material(TomlReader& r) {
       r.fail("cohesion", "a Drucker-Prager material needs friction_angle > 0 or cohesion > 0");
   } else {
     r.reject({"friction_angle", "dilatancy_angle", "cohesion", "critical_volume_strain",
-              "tension_cutoff"},
+              "critical_opening", "tension_cutoff"},
              "is not used by model '" + model + "'");
   }
   r.finish();
@@ -371,6 +376,7 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
   J run = {{"dimension", dim}, {"duration", s.duration}};
   run["time_step"] = p.fixed_time_step > 0.0 ? J(p.fixed_time_step) : J("auto");
   run["cfl"] = p.cfl;
+  run["ke_blowup_factor"] = s.ke_blowup_factor;
   run["gravity"] = point(p.gravity);
   run["shape"] = detail::name_of(kShapes, p.shape);
   run["scheme"] = detail::name_of(kSchemes, p.scheme);
@@ -401,7 +407,10 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
       j["friction_angle"] = rad2deg(m.friction_angle);
       j["dilatancy_angle"] = rad2deg(m.dilatancy_angle);
       j["cohesion"] = m.cohesion;
-      j["critical_volume_strain"] = m.critical_volume_strain;
+      if (m.critical_opening > 0.0)
+        j["critical_opening"] = m.critical_opening;
+      else
+        j["critical_volume_strain"] = m.critical_volume_strain;
       if (m.model == MaterialModel::DruckerPrager && std::isfinite(m.tension_cutoff))
         j["tension_cutoff"] = m.tension_cutoff;
     }

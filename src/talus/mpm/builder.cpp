@@ -131,7 +131,10 @@ Solver<D> build_mpm(const MpmScenario& sc) {
   for (int f = 0; f < 2 * D; ++f) faces[f] = sc.grid.faces[f];
   Grid<D> grid(Space<D>::from3(sc.grid.lo), Space<D>::from3(sc.grid.hi), sc.grid.cell_size, faces);
   std::vector<Material> materials;
-  for (const auto& m : sc.materials) materials.push_back(make_material(m));
+  for (MaterialParams m : sc.materials) {
+    m.critical_volume_strain = critical_volume_strain(m, sc.grid.cell_size);
+    materials.push_back(make_material(m));
+  }
   SolverParams params = sc.solver;
   int per_cell = 0;
   for (const auto& b : sc.bodies) per_cell = std::max(per_cell, b.per_cell);

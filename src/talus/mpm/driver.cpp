@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "talus/core/progress.hpp"
+#include "talus/mpm/health.hpp"
 
 namespace talus::mpm {
 
@@ -33,6 +34,8 @@ MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmO
       for (auto* o : obs) o->on_snapshot(s);
   }
   const std::int64_t start = s.steps;
+  const double blowup = drives_energy_in(s) ? 0.0 : c.ke_blowup_factor;
+  const double available = blowup > 0.0 ? available_energy(s) : 0.0;
   // Next output times are counted in intervals from t = 0, so rounding of the
   // variable step never accumulates.
   auto next_after = [&](double interval) {
@@ -47,6 +50,8 @@ MpmRunStats run_mpm(Solver<D>& s, const MpmRunControl& c, const std::vector<MpmO
     if (s.time + dt > c.duration) dt = c.duration - s.time;
     s.step(dt);
     const bool last = s.time >= c.duration * (1.0 - 1e-12);
+    // Every 10th step: an O(n) sum beside a step of many O(n) passes.
+    if (blowup > 0.0 && (s.steps % 10 == 0 || last)) check_energy(s, available, blowup);
     if (last || s.time >= next_series) {
       for (auto* o : obs) o->on_series(s);
       next_series = next_after(c.series_interval);

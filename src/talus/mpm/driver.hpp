@@ -1,8 +1,9 @@
 #pragma once
 // The MPM run loop: advances a solver to the end time with the CFL step and
 // calls the observers (series, snapshots, progress) at their intervals of
-// simulated time. Health checks (non-finite velocities, points leaving the
-// grid) are the solver's and stop the run with a RunError.
+// simulated time. Health checks: non-finite velocities and points leaving the
+// grid are the solver's, energy blow-up the loop's (health.hpp); each stops
+// the run with a RunError.
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct MpmRunControl {
   double snapshot_interval = 0.0;    // 0: first and last only; < 0: none
   double checkpoint_interval = 0.0;  // 0: none (never at the end: the run is complete)
   double progress_seconds = 1.0;
+  // Stop when the kinetic energy exceeds this many times the energy the start
+  // state could release (health.hpp); <= 0: never. Not checked while a rigid
+  // body is driven (it feeds energy in).
+  double ke_blowup_factor = 10.0;
 };
 
 struct MpmRunStats {

@@ -111,6 +111,13 @@ void NewtonianFluid::update(MaterialState& s, const Mat3& l, double dt, double) 
 }
 double NewtonianFluid::wave_speed() const { return std::sqrt(bulk / density); }
 
+double critical_volume_strain(const MaterialParams& p, double cell_size) {
+  // The bonds are gone at a volume strain 2 eps_c; in a band of width h that
+  // is an opening of 2 eps_c h.
+  return p.critical_opening > 0.0 ? p.critical_opening / (2.0 * cell_size)
+                                  : p.critical_volume_strain;
+}
+
 Material make_material(const MaterialParams& p) {
   const auto k = ElasticConstants::from(p.youngs_modulus, p.poisson_ratio);
   switch (p.model) {

@@ -32,6 +32,11 @@ struct MaterialParams {
   double tension_cutoff = std::numeric_limits<double>::infinity();
   // Critical volume strain eps_c of the cohesion loss; 0 = cohesion is kept.
   double critical_volume_strain = 0.0;
+  // Crack-band form of the same loss (Bazant & Oh 1983): the opening w_c (m)
+  // at which a band one cell wide has lost its cohesion, so that
+  // eps_c = w_c / (2 h) on a grid of cell size h and the work of opening a
+  // crack does not shrink with the cell. 0 = use critical_volume_strain.
+  double critical_opening = 0.0;
   double bulk_modulus = 0.0;  // Pa (fluid)
   double viscosity = 0.0;     // Pa s (fluid)
 };
@@ -112,6 +117,9 @@ using Material =
     std::variant<LinearElastic, NeoHookean, DruckerPrager, MohrCoulomb, NewtonianFluid>;
 
 Material make_material(const MaterialParams& p);
+// The critical volume strain on a grid of cell size h (from critical_opening
+// when it is set).
+double critical_volume_strain(const MaterialParams& p, double cell_size);
 double wave_speed(const Material& m);
 double density(const Material& m);
 // Initial cohesion c0 (0 for models without one).
