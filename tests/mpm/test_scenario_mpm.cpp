@@ -220,6 +220,14 @@ TEST(MpmScenario, PlanViewBed) {
   expect_error(edit(kBase, "critical_volume_strain = 0.01",
                     "critical_volume_strain = 0.01\ncritical_opening = 2e-4"),
                "either critical_volume_strain or critical_opening");
+  expect_error(edit(kBase, "critical_volume_strain = 0.01", "nonlocal_length = 0.01"),
+               "'nonlocal_length'");
+  const auto nonlocal = parse_mpm_scenario(
+      load_scenario_text(edit(kBase, "critical_volume_strain = 0.01",
+                              "critical_volume_strain = 0.01\nnonlocal_length = 0.02"),
+                         "nonlocal.toml"));
+  EXPECT_EQ(nonlocal.materials[0].nonlocal_length, 0.02);
+  EXPECT_EQ(mpm::build_mpm<2>(nonlocal).cohesion_length, std::vector<double>{0.02});
   expect_error(edit(kBase, "shape =", "plan_view = { basal_friction = 0.4 }\nshape ="),
                "'normal_gravity'");
   expect_error(

@@ -127,6 +127,11 @@ mpm::MaterialParams read_material(TomlReader& r) {
     if (m.critical_opening > 0.0 && r.has("critical_volume_strain"))
       r.fail("critical_opening",
              "either critical_volume_strain or critical_opening (the crack-band form), not both");
+    m.nonlocal_length = number_in(r, "nonlocal_length", 0.0, non_negative());
+    if (m.nonlocal_length > 0.0 && !(m.critical_volume_strain > 0.0))
+      r.fail("nonlocal_length",
+             "a critical_volume_strain > 0 beside it (the averaged dilation drives that loss; "
+             "critical_opening is the other, crack-band, regularisation)");
     if (m.model == MaterialModel::DruckerPrager)
       m.tension_cutoff = number_in(r, "tension_cutoff", m.tension_cutoff, non_negative());
     else
@@ -135,7 +140,7 @@ mpm::MaterialParams read_material(TomlReader& r) {
       r.fail("cohesion", "a Drucker-Prager material needs friction_angle > 0 or cohesion > 0");
   } else {
     r.reject({"friction_angle", "dilatancy_angle", "cohesion", "critical_volume_strain",
-              "critical_opening", "tension_cutoff"},
+              "critical_opening", "nonlocal_length", "tension_cutoff"},
              "is not used by model '" + model + "'");
   }
   r.finish();
@@ -411,6 +416,7 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
         j["critical_opening"] = m.critical_opening;
       else
         j["critical_volume_strain"] = m.critical_volume_strain;
+      if (m.nonlocal_length > 0.0) j["nonlocal_length"] = m.nonlocal_length;
       if (m.model == MaterialModel::DruckerPrager && std::isfinite(m.tension_cutoff))
         j["tension_cutoff"] = m.tension_cutoff;
     }

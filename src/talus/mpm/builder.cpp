@@ -142,6 +142,7 @@ Solver<D> build_mpm(const MpmScenario& sc) {
     per_cell = std::max(per_cell, sc.flume->release_per_cell);
   if (per_cell > 0) params.gimp_half_width = 0.5 / per_cell;
   Solver<D> solver(std::move(grid), std::move(materials), params);
+  for (const auto& m : sc.materials) solver.cohesion_length.push_back(m.nonlocal_length);
 
   const double h = sc.grid.cell_size;
   const Vec g = Space<D>::from3(sc.solver.gravity);

@@ -37,6 +37,9 @@ struct MaterialParams {
   // eps_c = w_c / (2 h) on a grid of cell size h and the work of opening a
   // crack does not shrink with the cell. 0 = use critical_volume_strain.
   double critical_opening = 0.0;
+  // Length (m) over which the dilation that drives the loss is averaged
+  // (nonlocal.hpp); 0 = local.
+  double nonlocal_length = 0.0;
   double bulk_modulus = 0.0;  // Pa (fluid)
   double viscosity = 0.0;     // Pa s (fluid)
 };

@@ -9,6 +9,7 @@
 #include "talus/core/error.hpp"
 #include "talus/mpm/apic.hpp"
 #include "talus/mpm/membrane_grid.hpp"
+#include "talus/mpm/nonlocal.hpp"
 #include "talus/mpm/smoothing.hpp"
 
 namespace talus::mpm {
@@ -304,6 +305,18 @@ void Solver<D>::update_stresses(double dt) {
   for (std::size_t m = 0; m < materials.size(); ++m) {
     const std::vector<int>& list = by_material_[m];
     const auto count = static_cast<std::int64_t>(list.size());
+    const double ell = m < cohesion_length.size() ? cohesion_length[m] : 0.0;
+    if (ell > 0.0) {
+      // The dilation dV/V0 of this step (compaction restores no bonds), averaged.
+      dilation_.resize(list.size());
+#pragma omp parallel for schedule(static)
+      for (std::int64_t k = 0; k < count; ++k) {
+        const int p = list[k];
+        dilation_[k] = std::max(0.0, particles.volume[p] * particles.velocity_gradient[p].trace() *
+                                         dt / particles.volume0[p]);
+      }
+      nonlocal_average(particles, list, ell, dilation_, nonlocal_scratch_);
+    }
     std::visit(
         [&](const auto& model) {
 #pragma omp parallel for schedule(static)
@@ -312,8 +325,9 @@ void Solver<D>::update_stresses(double dt) {
             const Mat3& lp = particles.velocity_gradient[p];
             const double v_old = particles.volume[p];
             particles.volume[p] = v_old * (1.0 + lp.trace() * dt);
-            model.update(particles.state[p], lp, dt,
-                         (particles.volume[p] - v_old) / particles.volume0[p]);
+            const double dv_over_v0 =
+                ell > 0.0 ? dilation_[k] : (particles.volume[p] - v_old) / particles.volume0[p];
+            model.update(particles.state[p], lp, dt, dv_over_v0);
           }
         },
         materials[m]);

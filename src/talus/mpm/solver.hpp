@@ -58,6 +58,9 @@ class Solver {
   // Geotextile membranes on the same grid (membrane.hpp, membrane_grid.hpp).
   std::vector<Membrane<D>> membranes;
   std::vector<Material> materials;
+  // Per material: the length over which the dilation that drives the cohesion
+  // loss is averaged (nonlocal.hpp); 0 or absent = local.
+  std::vector<double> cohesion_length;
   SolverParams params;
   double time = 0.0;
   std::int64_t steps = 0;
@@ -89,9 +92,10 @@ class Solver {
     std::vector<double> mass;
     std::vector<Vec> momentum, force;
   };
-  std::vector<NodeBuffer> buffers_;         // one per thread
-  std::vector<RigidNodes<D>> rigid_nodes_;  // one per rigid body
-  std::vector<double> smoothing_;           // per-cell sums (volumetric smoothing)
+  std::vector<NodeBuffer> buffers_;                  // one per thread
+  std::vector<RigidNodes<D>> rigid_nodes_;           // one per rigid body
+  std::vector<double> smoothing_;                    // per-cell sums (volumetric smoothing)
+  std::vector<double> dilation_, nonlocal_scratch_;  // non-local cohesion loss
 };
 
 }  // namespace talus::mpm
