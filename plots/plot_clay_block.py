@@ -68,6 +68,19 @@ def crack_metrics(x0, ratio, spacing, corner_z, band):
     }
 
 
+def start_and_end(run, fields):
+    """Each point's first-snapshot position (matched by id), its last position, the first and
+    last snapshots' fields (the first in its own order) and the last snapshot's time."""
+    snaps = snapshots(run)
+    if len(snaps) < 2:
+        raise SystemExit(f"{run}: needs at least two particle snapshots")
+    xyz0, d0 = read_points(snaps[0][1], ("id",) + tuple(fields))
+    xyz1, d1 = read_points(snaps[-1][1], ("id",) + tuple(fields))
+    start = np.empty((int(np.max(d0["id"])) + 1, 3))
+    start[d0["id"].astype(int)] = xyz0
+    return start[d1["id"].astype(int)], xyz1, d0, d1, snaps[-1][0]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("run")
@@ -76,24 +89,16 @@ def main():
     ap.add_argument("--band", type=float, default=None,
                     help="half width of the band about the corner line (m; default: one spacing)")
     args = ap.parse_args()
-    snaps = snapshots(args.run)
-    if len(snaps) < 2:
-        raise SystemExit(f"{args.run}: needs at least two particle snapshots")
-    fields = ("id", "c_over_c0", "radius", "plastic_strain")
-    xyz0, d0 = read_points(snaps[0][1], fields)
-    xyz1, d1 = read_points(snaps[-1][1], fields)
+    x0, x1, _, d1, t_end = start_and_end(args.run, ("c_over_c0", "radius", "plastic_strain"))
     # A 2D plan-view run (z = 0 everywhere): its y is across; no side view.
-    plan = not np.any(xyz0[:, 2])
+    plan = not np.any(x0[:, 2])
     if plan:
-        xyz0, xyz1 = xyz0[:, [0, 2, 1]], xyz1[:, [0, 2, 1]]
-    start = np.empty((int(np.max(d0["id"])) + 1, 3))
-    start[d0["id"].astype(int)] = xyz0
-    x0, x1 = start[d1["id"].astype(int)], xyz1
+        x0, x1 = x0[:, [0, 2, 1]], x1[:, [0, 2, 1]]
     ratio = d1["c_over_c0"]
     spacing = 2.0 * float(np.median(d1["radius"]))
     band = args.band if args.band is not None else spacing
     m = crack_metrics(x0, ratio, spacing, args.corner_z, band)
-    m["time"] = snaps[-1][0]
+    m["time"] = t_end
 
     out = os.path.join(args.run, "plots")
     os.makedirs(out, exist_ok=True)

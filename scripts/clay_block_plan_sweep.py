@@ -29,7 +29,7 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from plot_mpm import read_points, snapshots  # noqa: E402
+from plot_clay_block import start_and_end  # noqa: E402
 
 CLAYS = {"weak": "mpm_clay_block_plan.toml", "strong": "mpm_clay_block_plan_strong.toml"}
 
@@ -55,12 +55,7 @@ def run_one(talus, out, clay, cell, speed, sets, label, eps_c):
 def start_map(ax, run):
     """c/c0 at the end, drawn in the start shape (x along, y across): the
     points start on a lattice of one spacing, so they fill an image."""
-    snaps = snapshots(run)
-    xyz0, d0 = read_points(snaps[0][1], ("id", "radius"))
-    _, d1 = read_points(snaps[-1][1], ("id", "c_over_c0"))
-    start = np.empty((int(np.max(d0["id"])) + 1, 3))
-    start[d0["id"].astype(int)] = xyz0
-    x0 = start[d1["id"].astype(int)]
+    x0, _, d0, d1, _ = start_and_end(run, ("c_over_c0", "radius"))
     spacing = 2.0 * float(np.median(d0["radius"]))
     lo = x0[:, :2].min(axis=0)
     idx = np.rint((x0[:, :2] - lo) / spacing).astype(int)
