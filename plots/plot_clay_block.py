@@ -19,7 +19,10 @@ over half the block's length" becomes a length that can be measured:
   damage_reach   how far back from the front 95 % of the damaged points
                  started, as a fraction of the block's length (local damage
                  near the impact: small; damage back to mid-length: about 0.5);
-  cracked/damaged fractions of all points (c/c0 < 1, c/c0 < 0.5).
+  cracked/damaged fractions of all points (c/c0 < 1, c/c0 < 0.5);
+  broken_*       crack length, reach and fraction with the stricter c/c0 < 0.1
+                 (nine tenths of the bonds gone), which tells a crack through
+                 which the bonds are gone from a zone that is only weakened.
 """
 import argparse
 import json
@@ -33,21 +36,35 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 DAMAGED = 0.5
+BROKEN = 0.1
+
+
+def crack_length(x0, damaged, spacing, corner_z, band, front):
+    """Length from the front backwards over which every slice of one point
+    spacing in the band about the corner line holds a damaged point."""
+    in_band = np.abs(x0[:, 2] - corner_z) <= band
+    slices = np.floor((front - x0[:, 0]) / spacing + 0.5).astype(int)
+    crack = 0
+    for k in range(int(np.max(slices)) + 1):
+        if not np.any(damaged[in_band & (slices == k)]):
+            break
+        crack += 1
+    return crack * spacing
+
+
+def reach(x0, damaged, spacing, front, length):
+    if not np.any(damaged):
+        return 0.0
+    return float(np.percentile(front - x0[damaged, 0], 95.0) + 0.5 * spacing) / length
 
 
 def crack_metrics(x0, ratio, spacing, corner_z, band):
     front, rear = float(np.max(x0[:, 0])), float(np.min(x0[:, 0]))
     length = front - rear + spacing
     damaged = ratio < DAMAGED
-    in_band = np.abs(x0[:, 2] - corner_z) <= band
-    # Slices of one point spacing from the front backwards.
-    slices = np.floor((front - x0[:, 0]) / spacing + 0.5).astype(int)
-    crack = 0
-    for k in range(int(np.max(slices)) + 1):
-        sel = in_band & (slices == k)
-        if not np.any(damaged[sel]):
-            break
-        crack += 1
+    broken = ratio < BROKEN
+    crack = crack_length(x0, damaged, spacing, corner_z, band, front)
+    broken_crack = crack_length(x0, broken, spacing, corner_z, band, front)
     mid = rear + 0.5 * (front - rear)
     n_damaged = int(np.count_nonzero(damaged))
     return {
@@ -58,13 +75,14 @@ def crack_metrics(x0, ratio, spacing, corner_z, band):
         "block_length": length,
         "corner_z": corner_z,
         "band_half_width": band,
-        "crack_length": crack * spacing,
-        "crack_length_fraction": crack * spacing / length,
+        "crack_length": crack,
+        "crack_length_fraction": crack / length,
         "damaged_rear_fraction":
             float(np.count_nonzero(damaged & (x0[:, 0] < mid)) / n_damaged) if n_damaged else 0.0,
-        "damage_reach_fraction":
-            float(np.percentile(front - x0[damaged, 0], 95.0) + 0.5 * spacing) / length
-            if n_damaged else 0.0,
+        "damage_reach_fraction": reach(x0, damaged, spacing, front, length),
+        "broken_fraction": float(np.mean(broken)),
+        "broken_crack_length_fraction": broken_crack / length,
+        "broken_reach_fraction": reach(x0, broken, spacing, front, length),
     }
 
 

@@ -46,6 +46,8 @@ def run_one(talus, out, clay, cell, speed, sets, label, eps_c):
         if eps_c:
             cmd += ["--set", f"materials.0.critical_opening={2.0 * eps_c * float(cell)!r}"]
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    if not os.path.exists(metrics) or "broken_fraction" not in json.load(open(metrics)):
+        # Metrics of a finished run are recomputed when plot_clay_block.py gained some.
         subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "plots", "plot_clay_block.py"), d,
                         "--band", str(cell)], check=True, stdout=subprocess.DEVNULL)
     with open(metrics) as f:
@@ -86,15 +88,18 @@ def main():
         done = list(pool.map(
             lambda j: run_one(args.talus, args.out, *j, args.set, args.label, args.eps_c), jobs))
     results = {j: r for j, r in zip(jobs, done)}
-    print("| cell, v | clay | points | cracked | damaged | crack | reach |")
-    print("|---|---|---|---|---|---|---|")
+    print("| cell, v | clay | points | cracked | damaged | crack | reach "
+          "| broken | broken crack | broken reach |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for c in cells:
         for v in speeds:
             for clay in CLAYS:
                 m = results[(clay, c, v)][1]
                 print(f"| {float(c) * 100:g} cm, {v} m/s | {clay} | {m['points']} | "
                       f"{m['cracked_fraction']:.3f} | {m['damaged_fraction']:.3f} | "
-                      f"{m['crack_length_fraction']:.3f} | {m['damage_reach_fraction']:.3f} |")
+                      f"{m['crack_length_fraction']:.3f} | {m['damage_reach_fraction']:.3f} | "
+                      f"{m['broken_fraction']:.3f} | {m['broken_crack_length_fraction']:.3f} | "
+                      f"{m['broken_reach_fraction']:.3f} |")
     rows = [(c, v) for c in cells for v in speeds]
     fig, axes = plt.subplots(len(rows), 2, figsize=(8, 3.0 * len(rows)), squeeze=False,
                              layout="constrained")
