@@ -9,8 +9,8 @@ cell size and speed (one thread each, --jobs at a time), reads each run's
 crack metrics with plots/plot_clay_block.py (band = the cell size), prints a
 markdown table and writes OUT/maps.png (OUT/maps_LABEL.png with --label): the mean c/c0 of each run in the
 block's start shape, weak beside strong, one row per (cell, speed).
---eps-c E replaces the scenarios' crack-band opening by a fixed critical
-volume strain E on every grid (critical_opening = 2 E h). Runs already
+--eps-c E replaces the scenarios' cohesion loss by the local one with a fixed
+critical volume strain E on every grid. Runs already
 complete in OUT (a cracks.json present) are not repeated.
 """
 import argparse
@@ -44,7 +44,9 @@ def run_one(talus, out, clay, cell, speed, sets, label, eps_c):
         for s in sets:
             cmd += ["--set", s]
         if eps_c:
-            cmd += ["--set", f"materials.0.critical_opening={2.0 * eps_c * float(cell)!r}"]
+            cmd += ["--set", "materials.0.critical_opening=0", "--set",
+                    "materials.0.nonlocal_length=0", "--set",
+                    f"materials.0.critical_volume_strain={eps_c!r}"]
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     if not os.path.exists(metrics) or "broken_fraction" not in json.load(open(metrics)):
         # Metrics of a finished run are recomputed when plot_clay_block.py gained some.

@@ -195,8 +195,9 @@ TEST(MpmScenario, BundledColumnBuilds) {
 // scenario: parsed, round-tripped through the resolved file, bad
 // combinations refused with the key named.
 // The bundled plan-view clay block: its bed friction, normal gravity and
-// crack-band opening are read and round-trip; the bed is refused in 3D or
-// without a value, the opening beside a critical volume strain.
+// non-local cohesion loss are read and round-trip; the bed is refused in 3D or
+// without a value, the crack-band opening beside a critical volume strain
+// (unless that is 0: switched off).
 TEST(MpmScenario, PlanViewBed) {
   const auto file = load_scenario_file(
       std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block_plan_strong.toml", {});
@@ -216,7 +217,13 @@ TEST(MpmScenario, PlanViewBed) {
               "box = { min = [0, 0, 0], max = [0.3, 0.2, 0.2] }");
   parse_mpm_scenario(load_scenario_text(in3d, "3d.toml"));  // valid without the bed
   expect_error(edit(in3d, "shape =", bed + "shape ="), "no plan_view in dimension = 3");
-  EXPECT_EQ(sc.materials[0].critical_opening, 2e-4);
+  EXPECT_EQ(sc.materials[0].critical_volume_strain, 0.01);
+  EXPECT_EQ(sc.materials[0].nonlocal_length, 0.02);
+  const auto band = parse_mpm_scenario(load_scenario_text(
+      edit(kBase, "critical_volume_strain = 0.01",
+           "critical_volume_strain = 0\ncritical_opening = 2e-4"),
+      "band.toml"));
+  EXPECT_EQ(band.materials[0].critical_opening, 2e-4);
   expect_error(edit(kBase, "critical_volume_strain = 0.01",
                     "critical_volume_strain = 0.01\ncritical_opening = 2e-4"),
                "either critical_volume_strain or critical_opening");

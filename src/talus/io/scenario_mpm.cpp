@@ -124,7 +124,8 @@ mpm::MaterialParams read_material(TomlReader& r) {
     m.cohesion = number_in(r, "cohesion", 0.0, non_negative());
     m.critical_volume_strain = number_in(r, "critical_volume_strain", 0.0, non_negative());
     m.critical_opening = number_in(r, "critical_opening", 0.0, non_negative());
-    if (m.critical_opening > 0.0 && r.has("critical_volume_strain"))
+    // 0 means "none" for either key, so a --set can switch one form off.
+    if (m.critical_opening > 0.0 && m.critical_volume_strain > 0.0)
       r.fail("critical_opening",
              "either critical_volume_strain or critical_opening (the crack-band form), not both");
     m.nonlocal_length = number_in(r, "nonlocal_length", 0.0, non_negative());
