@@ -219,10 +219,10 @@ TEST(MpmScenario, PlanViewBed) {
   expect_error(edit(in3d, "shape =", bed + "shape ="), "no plan_view in dimension = 3");
   EXPECT_EQ(sc.materials[0].critical_volume_strain, 0.01);
   EXPECT_EQ(sc.materials[0].nonlocal_length, 0.02);
-  const auto band = parse_mpm_scenario(load_scenario_text(
-      edit(kBase, "critical_volume_strain = 0.01",
-           "critical_volume_strain = 0\ncritical_opening = 2e-4"),
-      "band.toml"));
+  const auto band = parse_mpm_scenario(
+      load_scenario_text(edit(kBase, "critical_volume_strain = 0.01",
+                              "critical_volume_strain = 0\ncritical_opening = 2e-4"),
+                         "band.toml"));
   EXPECT_EQ(band.materials[0].critical_opening, 2e-4);
   expect_error(edit(kBase, "critical_volume_strain = 0.01",
                     "critical_volume_strain = 0.01\ncritical_opening = 2e-4"),
