@@ -48,8 +48,12 @@ def run_one(talus, out, clay, cell, speed, sets, label, eps_c):
                     "materials.0.nonlocal_length=0", "--set",
                     f"materials.0.critical_volume_strain={eps_c!r}"]
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    if not os.path.exists(metrics) or "broken_fraction" not in json.load(open(metrics)):
-        # Metrics of a finished run are recomputed when plot_clay_block.py gained some.
+    # Metrics of a finished run are recomputed when plot_clay_block.py gained some.
+    stale = True
+    if os.path.exists(metrics):
+        with open(metrics) as f:
+            stale = "broken_fraction" not in json.load(f)
+    if stale:
         subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "plots", "plot_clay_block.py"), d,
                         "--band", str(cell)], check=True, stdout=subprocess.DEVNULL)
     with open(metrics) as f:
