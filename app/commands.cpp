@@ -74,7 +74,7 @@ template <int D>
 int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunOptions& opt,
                      bool resume) {
   const auto t_setup = std::chrono::steady_clock::now();
-  auto run = dem::build_dem<D>(sc, {opt.threads, !resume});
+  auto run = dem::build_dem<D>(sc, {opt.threads, !resume, !resume});
   if (resume) {
     dem::load_checkpoint(run->system, dem::DemOutputs<D>::checkpoint_path(out));
     run->system.threads = opt.threads;
@@ -379,10 +379,10 @@ int validate_command(const ValidateOptions& opt) {
   std::size_t n = 0;
   if (sc.run.dimension == 2) {
     auto run = dem::build_dem<2>(sc, {1, false});
-    dt = run->system.dt, crit = run->critical_time_step, n = run->system.particles.size();
+    dt = run->system.dt, crit = run->system.critical_time_step, n = run->system.particles.size();
   } else {
     auto run = dem::build_dem<3>(sc, {1, false});
-    dt = run->system.dt, crit = run->critical_time_step, n = run->system.particles.size();
+    dt = run->system.dt, crit = run->system.critical_time_step, n = run->system.particles.size();
   }
   fmt::print("{}: valid ({}D DEM, {} particles, {} walls, time step {:.3g} s, critical {:.3g} s)\n",
              opt.file, sc.run.dimension, n, sc.walls.size(), dt, crit);

@@ -63,10 +63,10 @@ void write_dem_summary(const dem::DemScenario& sc, const dem::DemRun<D>& run,
   }
   json j = header(status, "dem", nullptr, D, io::scenario_to_json(sc));
   j["resolved"] = {{"time_step_s", s.dt},
-                   {"critical_time_step_s", run.critical_time_step},
-                   {"reference_impact_speed_m_s", run.reference_speed},
+                   {"critical_time_step_s", run.system.critical_time_step},
+                   {"reference_impact_speed_m_s", run.system.reference_speed},
                    {"skin_m", s.skin},
-                   {"settle_time_s", run.settle_time},
+                   {"settle_time_s", run.system.settle_time},
                    {"threads", threads}};
   j["run"] = run_block(summary, s.time, "particle_steps_per_s", p.size());
   j["run"]["neighbour_builds"] = s.neighbours.builds;

@@ -13,7 +13,7 @@ using namespace talus::dem;
 // of the peer column) makes the contacts blow up, and the driver must notice.
 TEST(Health, UnstableTimeStepStopsTheRunWithADiagnosis) {
   auto run = build_dem<3>(cases::peer_column(6, 4, 12), {});
-  run->system.dt = 8.0 * run->critical_time_step;
+  run->system.dt = 8.0 * run->system.critical_time_step;
   RunControl c;
   c.duration = 4000 * run->system.dt;
   try {

@@ -132,7 +132,7 @@ TEST(Settling, GateRemovedAtStartHoldsThePackingWhileItSettles) {
   auto run = build_dem<2>(sc, {});
   const auto& p = run->system.particles;
   ASSERT_GT(p.size(), 50u);
-  EXPECT_GT(run->settle_time, 0.05);
+  EXPECT_GT(run->system.settle_time, 0.05);
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_LT(p.x[i].x() + p.r[i], gate_x + 1e-4);
   // After the release the column spreads past the gate's former place.
   RunControl c;

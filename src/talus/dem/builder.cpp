@@ -188,6 +188,10 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
     throw InputError("[[membranes]]: membranes need run.dimension = 3");
   }
 
+  run->stepper = make_stepper<D>(s);
+  // A resumed run takes particles, step and skin from its checkpoint.
+  if (!opt.place) return run;
+
   int64_t id = 0;
   double r_max = 0.0, v_max = 0.0;
   for (const Placed& q : place_particles(sc, sc.run.seed)) {
@@ -203,24 +207,22 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   if (sc.contact.lock_rotation)
     for (auto& w : s.particles.w) w = Space<D>::rot_zero();
   s.skin = sc.run.skin > 0.0 ? sc.run.skin : 0.2 * r_max;
-
-  run->stepper = make_stepper<D>(s);
   // Hertz laws need an impact speed: the fastest initial particle or a fall
   // through the domain height, at least 1 m/s.
   const double height = s.has_domain() ? (sc.run.domain_max - sc.run.domain_min).maxCoeff() : 1.0;
-  run->reference_speed =
+  s.reference_speed =
       std::max({1.0, 2.0 * v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
-  run->critical_time_step = run->stepper->critical_time_step(run->reference_speed);
+  s.critical_time_step = run->stepper->critical_time_step(s.reference_speed);
   if (sc.run.time_step > 0.0) {
-    if (sc.run.time_step > run->critical_time_step)
+    if (sc.run.time_step > s.critical_time_step)
       throw InputError(fmt::format(
           "[run] 'time_step': {:.4g} s is above the critical time step {:.4g} s of the stiffest "
           "contact and lightest particle; use at most {:.4g} s (or leave it out: automatic)",
-          sc.run.time_step, run->critical_time_step,
-          sc.run.safety_factor * run->critical_time_step));
+          sc.run.time_step, s.critical_time_step,
+          sc.run.safety_factor * s.critical_time_step));
     s.dt = sc.run.time_step;
   } else {
-    s.dt = sc.run.safety_factor * run->critical_time_step;
+    s.dt = sc.run.safety_factor * s.critical_time_step;
   }
 
   bool settle_needed = false;
@@ -231,7 +233,7 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
       sp = src.settle;
     }
   if (settle_needed && opt.settle) {
-    run->settle_time = settle(*run, sp);
+    s.settle_time = settle(*run, sp);
     s.time = 0.0;
     s.step = 0;
     for (auto& v : s.particles.v) v.setZero();

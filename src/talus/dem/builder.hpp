@@ -15,14 +15,14 @@ template <int D>
 struct DemRun {
   DemSystem<D> system;
   std::unique_ptr<StepperBase<D>> stepper;
-  double critical_time_step = 0.0;
-  double reference_speed = 0.0;  // impact speed the Hertz critical step assumes
-  double settle_time = 0.0;      // simulated seconds spent settling before t = 0
 };
 
 struct BuildOptions {
   int threads = 1;
   bool settle = true;  // false when the state comes from a checkpoint
+  // false when it comes from a checkpoint: no particles are placed (a random
+  // fill relaxes for seconds), and the step stays the checkpoint's.
+  bool place = true;
 };
 
 template <int D>

@@ -10,7 +10,9 @@ namespace talus::dem {
 namespace {
 constexpr const char* kMagic = "talus-dem-checkpoint";
 // 4: membranes (state and contact springs) and the walls' servo state.
-constexpr int32_t kVersion = 4;
+// 5: the critical step, its reference speed and the settling time (a resume
+// no longer places the particles it would compute them from).
+constexpr int32_t kVersion = 5;
 
 struct PairIndex {
   int32_t i, j;
@@ -22,6 +24,7 @@ void transfer(Ar& ar, System& s) {
   auto& p = s.particles;
   ar(s.time), ar(s.step), ar(s.dt), ar(s.removed), ar(s.skin), ar(s.wall_displacement_at_build),
       ar(s.wall_angle_at_build);
+  ar(s.critical_time_step), ar(s.reference_speed), ar(s.settle_time);
   ar(p.x), ar(p.v), ar(p.f), ar(p.w), ar(p.t), ar(p.r), ar(p.inv_m), ar(p.inv_I), ar(p.m);
   ar(p.material), ar(p.id), ar(p.contacts), ar(p.wall_contacts);
   ar(s.pair_contacts), ar(s.wall_contacts);

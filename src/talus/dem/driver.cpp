@@ -21,6 +21,14 @@ RunControl make_run_control(const DemScenario& sc, double dt) {
   c.series_every = steps(sc.output.series_interval, 100);
   c.snapshot_every = sc.output.write_snapshots ? steps(sc.output.snapshot_interval, 0) : -1;
   c.checkpoint_every = steps(sc.output.checkpoint_interval, 0);
+  // Checkpoints fall on series rows: observers average forces over the
+  // interval since their last row, and a resumed run must start that interval
+  // where the uninterrupted run did.
+  if (c.checkpoint_every > 0 && c.series_every > 0)
+    c.checkpoint_every =
+        std::max<int64_t>(1, std::llround(static_cast<double>(c.checkpoint_every) /
+                                          static_cast<double>(c.series_every))) *
+        c.series_every;
   c.ke_blowup_factor = sc.run.ke_blowup_factor;
   if (sc.beam && sc.beam->bending_friction) {
     FrictionChange f{sc.beam->bending_start, *sc.beam->bending_friction, {}};
@@ -80,7 +88,7 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
         throw RunError(fmt::format(
             "t = {:.6g} s: particle {} has a non-finite velocity. Check the time step (now {:.4g} "
             "s, critical {:.4g} s) and the material constants",
-            s.time, s.particles.id[i], s.dt, run.critical_time_step));
+            s.time, s.particles.id[i], s.dt, run.system.critical_time_step));
     throw RunError(fmt::format("t = {:.6g} s: kinetic energy is not finite", s.time));
   }
   for (const auto& m : s.membranes)
@@ -89,7 +97,7 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
         throw RunError(fmt::format(
             "t = {:.6g} s: membrane '{}' particle {} has a non-finite velocity. Check the time "
             "step (now {:.4g} s, critical {:.4g} s) and the membrane constants",
-            s.time, m.name, i, s.dt, run.critical_time_step));
+            s.time, m.name, i, s.dt, run.system.critical_time_step));
   bool walls_move = false;
   for (const auto& w : s.walls) walls_move = walls_move || w.moves();
   if (factor > 0.0 && !walls_move && ke > factor * e_avail)
@@ -97,7 +105,7 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
         "t = {:.6g} s: kinetic energy {:.4g} J exceeds {} times the energy available at the "
         "start ({:.4g} J): the run is unstable. Reduce the time step (now {:.4g} s, critical "
         "{:.4g} s)",
-        s.time, ke, factor, e_avail, s.dt, run.critical_time_step));
+        s.time, ke, factor, e_avail, s.dt, run.system.critical_time_step));
 }
 
 int64_t next_multiple(int64_t step, int64_t every) {

@@ -36,6 +36,11 @@ struct DemSystem {
   int threads = 1;
   int64_t removed = 0;    // particles that left the domain
   bool settling = false;  // the builder settles the packing: walls stay as at t = 0
+  // How the builder chose the step, kept for diagnostics and the summary; in
+  // the checkpoint, as a resume does not place the particles again.
+  double critical_time_step = 0.0;
+  double reference_speed = 0.0;  // impact speed the Hertz critical step assumes
+  double settle_time = 0.0;      // simulated seconds spent settling before t = 0
 
   // Flattened current wall primitives and the wall each belongs to.
   std::vector<geometry::Primitive> primitives;
