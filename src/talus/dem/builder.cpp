@@ -210,16 +210,14 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   // Hertz laws need an impact speed: the fastest initial particle or a fall
   // through the domain height, at least 1 m/s.
   const double height = s.has_domain() ? (sc.run.domain_max - sc.run.domain_min).maxCoeff() : 1.0;
-  s.reference_speed =
-      std::max({1.0, 2.0 * v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
+  s.reference_speed = std::max({1.0, 2.0 * v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
   s.critical_time_step = run->stepper->critical_time_step(s.reference_speed);
   if (sc.run.time_step > 0.0) {
     if (sc.run.time_step > s.critical_time_step)
       throw InputError(fmt::format(
           "[run] 'time_step': {:.4g} s is above the critical time step {:.4g} s of the stiffest "
           "contact and lightest particle; use at most {:.4g} s (or leave it out: automatic)",
-          sc.run.time_step, s.critical_time_step,
-          sc.run.safety_factor * s.critical_time_step));
+          sc.run.time_step, s.critical_time_step, sc.run.safety_factor * s.critical_time_step));
     s.dt = sc.run.time_step;
   } else {
     s.dt = sc.run.safety_factor * s.critical_time_step;
