@@ -25,10 +25,9 @@ RunControl make_run_control(const DemScenario& sc, double dt) {
   // interval since their last row, and a resumed run must start that interval
   // where the uninterrupted run did.
   if (c.checkpoint_every > 0 && c.series_every > 0)
-    c.checkpoint_every =
-        std::max<int64_t>(1, std::llround(static_cast<double>(c.checkpoint_every) /
-                                          static_cast<double>(c.series_every))) *
-        c.series_every;
+    c.checkpoint_every = std::max<int64_t>(1, std::llround(static_cast<double>(c.checkpoint_every) /
+                                                           static_cast<double>(c.series_every))) *
+                         c.series_every;
   c.ke_blowup_factor = sc.run.ke_blowup_factor;
   if (sc.beam && sc.beam->bending_friction) {
     FrictionChange f{sc.beam->bending_start, *sc.beam->bending_friction, {}};
