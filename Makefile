@@ -30,6 +30,7 @@ test-sanitize: deps
 bench: build
 	@TALUS_WITH_PEERS=1 bash scripts/install-deps.sh
 	@bash bench/peer.sh
+	@bash bench/flume.sh
 
 format:
 	@clang-format -i $$(git ls-files '*.cpp' '*.hpp')
