@@ -7,7 +7,8 @@ flow makes it jump from sample to sample. The mean force over a window is the
 change of the recorded impulse (the integral of the force over every step)
 divided by the window, so no step is missed. Prints, per wall, the mean force
 every STEP seconds (default 0.6-2.2 s every 0.1 s, window 0.02 s) and the
-largest mean force in x and y with its time.
+largest mean force in x and y with its time, and when each component settles:
+the last window whose mean lies more than 10 % from the mean of the last 0.1 s.
 """
 import csv
 import os
@@ -48,6 +49,10 @@ def main():
         for name, series in (("Fx", fx), ("Fy", fy)):
             tm, fm = max(series, key=lambda p: abs(p[1]))
             print(f"  largest |{name}|: {fm:.1f} N/m at {tm:.3f} s")
+            end = [f for tt, f in series if tt >= series[-1][0] - 0.1]
+            final = sum(end) / len(end)
+            off = [tt for tt, f in series if abs(f - final) > 0.1 * abs(final)]
+            print(f"  {name} within 10 % of its final {final:.1f} N/m from {off[-1] if off else 0:.3f} s")
 
 
 if __name__ == "__main__":
