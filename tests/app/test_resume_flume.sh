@@ -23,7 +23,7 @@ rc=$?; check_rc "resume"
 for f in series.csv flume/front.csv particles.pvd; do
   check "$f the same" 'cmp -s "$tmp/full/$f" "$tmp/killed/$f" || { diff "$tmp/full/$f" "$tmp/killed/$f" | head -4; false; }'
 done
-/usr/bin/env python3 - "$tmp/full/summary.json" "$tmp/killed/summary.json" > "$tmp/py" 2>&1 <<'PY'
+/usr/bin/python3 - "$tmp/full/summary.json" "$tmp/killed/summary.json" > "$tmp/py" 2>&1 <<'PY'
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:3])
 for key in ("time_step_s", "critical_time_step_s", "reference_impact_speed_m_s", "skin_m",
