@@ -1,5 +1,6 @@
 #include "talus/dem/linear_pairs.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "talus/dem/pair_blocks.hpp"
@@ -128,37 +129,52 @@ int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::si
   if (in.n_materials == 1)
     for (int l = 0; l < kBlock; ++l) b.set_coeffs(l, in.coeffs[0]);
   // Whether a pair touches is close to random from one pair to the next, so
-  // the filter has no branch: every pair is written into the next free slot,
-  // which only a touching pair keeps. Its shear moves into the block and the
-  // list's entry is zeroed (a pair that does not touch has no history); the
-  // block writes the new shear back.
+  // the filter has no branch. It runs in two passes over chunks of the list:
+  // the first only tests the distance and notes the touching pairs' indices
+  // (a pair that does not touch loses its history); the second fills the
+  // block from those alone. In the flow 2.45 candidates come per contact, and
+  // one pass that filled a block slot for every candidate wrote most of them
+  // in vain. The second pass recomputes the same differences, so the bits
+  // are those of the scalar path (NaN counts as touching there too).
   // The count of the block lives in a register (`l`): b.n shares its type
   // with b.i and b.j, so the compiler would reload it after their stores.
+  constexpr std::size_t kChunk = 256;
+  std::size_t hit[kChunk];
   int64_t touching = 0;
   int l = 0;
-  for (std::size_t k = k0; k < k1; ++k) {
-    const int i = pairs[k].i, j = pairs[k].j;
-    const Vec2 d = p.x[i] - p.x[j];
-    const double d2 = d.squaredNorm();
-    const double rs = p.r[i] + p.r[j];
-    b.i[l] = i;
-    b.j[l] = j;
-    b.k[l] = k;
-    b.dx[l] = d.x();
-    b.dy[l] = d.y();
-    b.d2[l] = d2;
-    b.ri[l] = p.r[i];
-    b.rj[l] = p.r[j];
-    b.sx[l] = shear[k].x();
-    b.sy[l] = shear[k].y();
-    shear[k] = zero_of<Vec2>();
-    const int touches = d2 >= rs * rs ? 0 : 1;  // as the scalar path (NaN counts as touching)
-    l += touches;
-    touching += touches;
-    if (l == kBlock) {
-      b.n = l;
-      pair_blocks::flush(b, in, fn, out);
-      l = 0;
+  for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
+    const std::size_t c1 = std::min(k1, c0 + kChunk);
+    std::size_t m = 0;
+    for (std::size_t k = c0; k < c1; ++k) {
+      const int i = pairs[k].i, j = pairs[k].j;
+      const double d2 = (p.x[i] - p.x[j]).squaredNorm();
+      const double rs = p.r[i] + p.r[j];
+      const bool touches = !(d2 >= rs * rs);
+      hit[m] = k;
+      m += touches ? 1 : 0;
+      shear[k] = touches ? shear[k] : zero_of<Vec2>();
+    }
+    touching += static_cast<int64_t>(m);
+    for (std::size_t q = 0; q < m; ++q) {
+      const std::size_t k = hit[q];
+      const int i = pairs[k].i, j = pairs[k].j;
+      const Vec2 d = p.x[i] - p.x[j];
+      b.i[l] = i;
+      b.j[l] = j;
+      b.k[l] = k;
+      b.dx[l] = d.x();
+      b.dy[l] = d.y();
+      b.d2[l] = d.squaredNorm();
+      b.ri[l] = p.r[i];
+      b.rj[l] = p.r[j];
+      b.sx[l] = shear[k].x();
+      b.sy[l] = shear[k].y();
+      shear[k] = zero_of<Vec2>();
+      if (++l == kBlock) {
+        b.n = l;
+        pair_blocks::flush(b, in, fn, out);
+        l = 0;
+      }
     }
   }
   b.n = l;
