@@ -39,6 +39,19 @@ struct alignas(64) Block {
     wi[l] = p.w[pi];
     wj[l] = p.w[pj];
   }
+  void put(int l, int pi, int pj, std::size_t pk, const Vec2& d, double dd, double r_i, double r_j,
+           const Vec2& s) {
+    i[l] = pi;
+    j[l] = pj;
+    k[l] = pk;
+    dx[l] = d.x();
+    dy[l] = d.y();
+    d2[l] = dd;
+    ri[l] = r_i;
+    rj[l] = r_j;
+    sx[l] = s.x();
+    sy[l] = s.y();
+  }
   void set_coeffs(int l, const LinearSpringDashpot::Coeffs& c) {
     kn[l] = c.kn;
     ks[l] = c.ks;
@@ -119,67 +132,12 @@ const char* linear_pairs_isa() { return Kernel::chosen().name; }
 
 int64_t linear_scatter_pairs(const LinearPairsInput& in, std::size_t k0, std::size_t k1,
                              const ForceTarget<2>& out) {
-  const auto& p = *in.particles;
-  auto& nl = *in.neighbours;
-  const auto& pairs = nl.pairs;
-  auto& shear = nl.pair_shear;
   const BlockFn fn = Kernel::chosen().fn;
   thread_local Block b;
   b.n = 0;
   if (in.n_materials == 1)
     for (int l = 0; l < kBlock; ++l) b.set_coeffs(l, in.coeffs[0]);
-  // Whether a pair touches is close to random from one pair to the next, so
-  // the filter has no branch. It runs in two passes over chunks of the list:
-  // the first only tests the distance and notes the touching pairs' indices
-  // (a pair that does not touch loses its history); the second fills the
-  // block from those alone. In the flow 2.45 candidates come per contact, and
-  // one pass that filled a block slot for every candidate wrote most of them
-  // in vain. The second pass recomputes the same differences, so the bits
-  // are those of the scalar path (NaN counts as touching there too).
-  // The count of the block lives in a register (`l`): b.n shares its type
-  // with b.i and b.j, so the compiler would reload it after their stores.
-  constexpr std::size_t kChunk = 256;
-  std::size_t hit[kChunk];
-  int64_t touching = 0;
-  int l = 0;
-  for (std::size_t c0 = k0; c0 < k1; c0 += kChunk) {
-    const std::size_t c1 = std::min(k1, c0 + kChunk);
-    std::size_t m = 0;
-    for (std::size_t k = c0; k < c1; ++k) {
-      const int i = pairs[k].i, j = pairs[k].j;
-      const double d2 = (p.x[i] - p.x[j]).squaredNorm();
-      const double rs = p.r[i] + p.r[j];
-      const bool touches = !(d2 >= rs * rs);
-      hit[m] = k;
-      m += touches ? 1 : 0;
-      shear[k] = touches ? shear[k] : zero_of<Vec2>();
-    }
-    touching += static_cast<int64_t>(m);
-    for (std::size_t q = 0; q < m; ++q) {
-      const std::size_t k = hit[q];
-      const int i = pairs[k].i, j = pairs[k].j;
-      const Vec2 d = p.x[i] - p.x[j];
-      b.i[l] = i;
-      b.j[l] = j;
-      b.k[l] = k;
-      b.dx[l] = d.x();
-      b.dy[l] = d.y();
-      b.d2[l] = d.squaredNorm();
-      b.ri[l] = p.r[i];
-      b.rj[l] = p.r[j];
-      b.sx[l] = shear[k].x();
-      b.sy[l] = shear[k].y();
-      shear[k] = zero_of<Vec2>();
-      if (++l == kBlock) {
-        b.n = l;
-        pair_blocks::flush(b, in, fn, out);
-        l = 0;
-      }
-    }
-  }
-  b.n = l;
-  if (b.n > 0) pair_blocks::flush(b, in, fn, out);
-  return touching;
+  return pair_blocks::scatter_touching(b, in, k0, k1, fn, out);
 }
 
 }  // namespace talus::dem
