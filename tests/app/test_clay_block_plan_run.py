@@ -25,16 +25,11 @@ import subprocess
 import sys
 import tempfile
 
+from checks import Checks
 from clay_block_checks import check_yield_and_rest, crack_metrics
 
 talus, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(name, ok):
-    if not ok:
-        failures.append(name)
-        print("FAIL:", name)
+check = Checks()
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -62,6 +57,4 @@ with tempfile.TemporaryDirectory() as tmp:
           f"({strong['broken_crack_length_fraction']:.3f})",
           strong["broken_crack_length_fraction"] <= 1.0 / 3.0)
 
-if failures:
-    sys.exit(f"{len(failures)} checks failed")
-print("all checks passed")
+check.finish("clay block plan run")

@@ -28,16 +28,11 @@ import subprocess
 import sys
 import tempfile
 
+from checks import Checks
 from clay_block_checks import check_yield_and_rest, crack_metrics
 
 talus, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(name, ok):
-    if not ok:
-        failures.append(name)
-        print("FAIL:", name)
+check = Checks()
 
 
 def run(tmp, name):
@@ -62,6 +57,4 @@ with tempfile.TemporaryDirectory() as tmp:
     check("the weak clay is more damaged than the strong",
           damaged["mpm_clay_block"] > damaged["mpm_clay_block_strong"])
 
-if failures:
-    sys.exit(f"{len(failures)} checks failed")
-print("all checks passed")
+check.finish("clay block run")

@@ -12,14 +12,10 @@ import subprocess
 import sys
 import tempfile
 
+from checks import Checks
+
 talus, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(name, ok):
-    if not ok:
-        failures.append(name)
-        print("FAIL:", name)
+check = Checks()
 
 
 # flume_A_model3.toml with the reduction above (tests/data/scenarios/flume_A_coarse.toml).
@@ -66,5 +62,4 @@ with tempfile.TemporaryDirectory() as tmp:
     check("plots are drawn", plots.returncode == 0 and all(
         os.path.getsize(p) > 10000 for p in plots.stdout.split()))
 
-print(f"flume run: {len(failures)} failed")
-sys.exit(1 if failures else 0)
+check.finish("flume run")

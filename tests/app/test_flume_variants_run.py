@@ -25,6 +25,8 @@ import subprocess
 import sys
 import tempfile
 
+from checks import Checks
+
 talus, src = sys.argv[1], sys.argv[2]
 coarse = os.path.join(src, "tests", "data", "scenarios", "flume_A_coarse.toml")
 variants = {
@@ -33,13 +35,7 @@ variants = {
     "lift": ["--set", "flume.gate=lift"],
 }
 seeds = (1, 2, 3)
-failures = []
-
-
-def check(name, ok):
-    print(("ok:   " if ok else "FAIL: ") + name)
-    if not ok:
-        failures.append(name)
+check = Checks(show_passed=True)
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -80,5 +76,4 @@ lift, delete = mean("lift", runup), mean("model3", runup)
 check(f"gate lifted or deleted: run-up within 15 % ({lift:.3f} vs {delete:.3f} m)",
       abs(lift - delete) <= 0.15 * delete)
 
-print(f"flume variants: {len(failures)} failed")
-sys.exit(1 if failures else 0)
+check.finish("flume variants")

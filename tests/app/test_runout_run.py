@@ -20,13 +20,9 @@ talus, src = sys.argv[1], sys.argv[2]
 sys.path.insert(0, os.path.join(src, "plots"))
 from talus_csv import read_columns  # noqa: E402
 
-failures = []
+from checks import Checks  # noqa: E402
 
-
-def check(name, ok):
-    if not ok:
-        failures.append(name)
-        print("FAIL:", name)
+check = Checks()
 
 
 def run(scenario, out, *sets):
@@ -109,5 +105,4 @@ with tempfile.TemporaryDirectory() as tmp:
     check("affected area", abs(np.count_nonzero(arrays["max_height"] > 0.01) * dx * dy - m["affected_area_m2"]) < 1e-6)
     plots("plot_runout2d.py", out)
 
-print("FAILED:" if failures else "ok", failures if failures else "")
-sys.exit(1 if failures else 0)
+check.finish("runout run")

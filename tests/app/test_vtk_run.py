@@ -14,14 +14,10 @@ import xml.etree.ElementTree as ET
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
+from checks import Checks
+
 talus, src = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(name, ok):
-    if not ok:
-        failures.append(name)
-        print("FAIL:", name)
+check = Checks()
 
 
 with tempfile.TemporaryDirectory() as tmp:
@@ -58,5 +54,4 @@ with tempfile.TemporaryDirectory() as tmp:
     walls = wreader.GetOutput()
     check("four plane walls drawn as 8 triangles", walls.GetNumberOfCells() == 8)
 
-print(f"vtk_run: {9 - len(failures)} passed, {len(failures)} failed")
-sys.exit(1 if failures else 0)
+check.finish("vtk_run")
