@@ -2,7 +2,8 @@
 """Barrier impulse and peak force against contact stiffness, over several packings.
 
 Usage: flume_stiffness.py TALUS SCENARIO OUT_DIR --stiffness 1e8,1e9 --seeds 1,2,3
-                          [--threads N] [--series-interval S] [--set key=value ...]
+                          [--threads N] [--series-interval S] [--until T1,T2,...]
+                          [--set key=value ...]
 
 Kuen (2011, §7.1, Abb. 41): a stiffer contact gives a shorter impact with a larger
 peak force but the same impulse. One flume run is chaotic: two runs that differ only
@@ -12,9 +13,13 @@ per stiffness cannot show a 5 % effect. This runs every (stiffness, seed) pair
 Stiffness is set for normal and shear, grains and walls (materials 0 and 1).
 Peak = largest barrier force over the series rows, each the mean force over one
 series interval (from the impulse columns; choose a short --series-interval).
+--until adds the barrier's x impulse accumulated from the start up to each time T
+(the row of series.csv at T), e.g. 1.4 for Kuen's time at which the forces settle:
+the impulse of the impact, without the static load that follows it.
 Prints one line per run and a markdown table of means and standard errors.
 """
 import argparse
+import csv
 import json
 import math
 import os
@@ -32,9 +37,26 @@ def run_one(a, k, seed):
     subprocess.run(cmd, check=True)
     f = json.load(open(os.path.join(out, "summary.json")))["flume"]["forces"]
     b, arc = f["barrier"], f["arc"]
-    return {"impulse_x": b["impulse_x"], "impulse_y": b["impulse_y"],
-            "arc_impulse_y": arc["impulse_y"], "peak_fx": b["peak_fx"],
-            "peak_fx_time": b["peak_fx_time"], "final_fx": b["final_fx"]}
+    r = {"impulse_x": b["impulse_x"], "impulse_y": b["impulse_y"],
+         "arc_impulse_y": arc["impulse_y"], "peak_fx": b["peak_fx"],
+         "peak_fx_time": b["peak_fx_time"], "final_fx": b["final_fx"]}
+    r.update(impulse_until(os.path.join(out, "series.csv"), a.until, a.series_interval))
+    return r
+
+
+def impulse_until(series, times, interval):
+    """Barrier x impulse at the series row of each time in `times`."""
+    out = {}
+    if not times:
+        return out
+    with open(series) as fh:
+        rows = [(float(r["time"]), float(r["barrier_impulse_x"])) for r in csv.DictReader(fh)]
+    for t in times:
+        row = min(rows, key=lambda tr: abs(tr[0] - t))
+        if abs(row[0] - t) > 0.5 * interval + 1e-9:
+            raise SystemExit(f"{series}: no row within half a series interval of t = {t:g} s")
+        out[f"impulse_x_to_{t:g}s"] = row[1]
+    return out
 
 
 def mean_se(v):
@@ -54,8 +76,10 @@ def main():
     p.add_argument("--seeds", default="1,2,3")
     p.add_argument("--threads", type=int, default=1)
     p.add_argument("--series-interval", type=float, default=5e-4)
+    p.add_argument("--until", default="", help="times T [s]: barrier x impulse up to T")
     p.add_argument("--set", action="append", default=[])
     a = p.parse_args()
+    a.until = [float(v) for v in a.until.split(",") if v]
     ks = [float(v) for v in a.stiffness.split(",")]
     seeds = [int(v) for v in a.seeds.split(",")]
     res = {}
@@ -65,6 +89,7 @@ def main():
             res[(k, s)] = r
             print(f"k={k:g} seed={s} " + " ".join(f"{n}={v:.6g}" for n, v in r.items()), flush=True)
     names = ["impulse_x", "impulse_y", "arc_impulse_y", "peak_fx", "final_fx"]
+    names += [f"impulse_x_to_{t:g}s" for t in a.until]
     print("\n| stiffness [N/m] | runs | " + " | ".join(names) + " |")
     print("|---" * (len(names) + 2) + "|")
     means = {}
