@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -129,6 +130,16 @@ TEST(ScenarioExtends, BundledFlumeVariantsDifferOnlyWhereTheySay) {
   EXPECT_NEAR(c3.flume->beta * 180 / M_PI, 61.0, 1e-12);
   EXPECT_EQ(c3.sources[0].count, a3.sources[0].count);
   EXPECT_DOUBLE_EQ(c3.materials[0].friction, a3.materials[0].friction);
+  // Kuen §6 ran the particle sizes on Model 3, geometry A, variant II (gate lifted).
+  for (const char* name : {"flume_A_scale2.toml", "flume_A_scale20.toml"}) {
+    const auto sc = parse_dem_scenario(load_scenario_file(dir + name, {}));
+    EXPECT_DOUBLE_EQ(sc.flume->beta, a3.flume->beta) << name;
+    EXPECT_EQ(sc.contact.rolling, dem::RollingModel::Kuen) << name;
+    const auto gate = std::find_if(sc.walls.begin(), sc.walls.end(),
+                                   [](const auto& w) { return w.name == "gate"; });
+    ASSERT_NE(gate, sc.walls.end()) << name;
+    EXPECT_GT(gate->motion.velocity.norm(), 0.0) << name << ": the gate is lifted";
+  }
 }
 
 }  // namespace
