@@ -1,6 +1,5 @@
 #include "talus/dem/linear_pairs.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "talus/dem/pair_blocks.hpp"
