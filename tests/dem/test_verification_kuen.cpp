@@ -34,11 +34,12 @@ TYPED_TEST_SUITE(KuenRun, Dims);
 
 // Kuen's linear contacts; friction 0 so that no contact torque competes with
 // the rolling resistance.
-DemScenario kuen_scenario(int dim, double dt, const Vec3& gravity) {
+DemScenario kuen_scenario(int dim, double dt, const Vec3& gravity, double reference_step = 0.0) {
   DemScenario sc = scenario(dim, ContactModel::Linear, dt, gravity);
   sc.contact.rolling = RollingModel::Kuen;
   sc.contact.kuen_wall_depth = kDepth;
   sc.contact.kuen_particle_factor = 0.5;
+  sc.contact.kuen_reference_step = reference_step;
   sc.materials.push_back(linear_material("sand", 2650, 1e8, 1e8, 0.5, 0.0));
   sc.materials.push_back(rigid_material("rigid"));
   return sc;
@@ -87,13 +88,17 @@ TYPED_TEST(KuenRun, SpinningParticleOnWallDeceleratesAtKuenRate) {
 
 // mu_Br: two touching particles lose half their spin every step; a third one,
 // touching nothing, keeps its spin. No gravity and no walls.
-TYPED_TEST(KuenRun, ParticleContactHalvesSpinEveryStep) {
-  constexpr int D = TypeParam::value;
+// With a reference step t_ref (kuen_reference_step) the factor per step is
+// mu_Br^(dt / t_ref): here t_ref = 2 dt, so the spin halves every second step.
+template <int D>
+void particle_contact_decays_spin(double steps_per_halving) {
   const double r = 1.5e-3;
   const double m = 2650 * Space<D>::volume(r);
   // A step far below sqrt(m/k) keeps the slightly overlapping pair together for
   // hundreds of steps while they push apart.
-  DemScenario sc = kuen_scenario(D, 0.01 * std::sqrt(m / 2 / 1e8), Vec3::Zero());
+  const double dt = 0.01 * std::sqrt(m / 2 / 1e8);
+  DemScenario sc = kuen_scenario(D, dt, Vec3::Zero(),
+                                 steps_per_halving == 1.0 ? 0.0 : steps_per_halving * dt);
   const Vec3 spin = D == 2 ? Vec3(Vec3::UnitZ()) : Vec3(Vec3::UnitY());
   add_balls(sc, {ball(Vec3::Zero(), Vec3::Zero(), r, "sand", 4.0 * spin),
                  ball(Vec3(2 * r - 1e-6, 0, 0), Vec3::Zero(), r, "sand", -6.0 * spin),
@@ -103,11 +108,19 @@ TYPED_TEST(KuenRun, ParticleContactHalvesSpinEveryStep) {
   const auto& p = run->system.particles;
   for (int n = 1; n <= 6; ++n) {
     run->stepper->advance(1);
-    const double factor = std::pow(0.5, n);
+    const double factor = std::pow(0.5, n / steps_per_halving);
     EXPECT_NEAR(Space<D>::rot_to3(p.w[index_of(p, 0)]).dot(spin), 4.0 * factor, 1e-12) << n;
     EXPECT_NEAR(Space<D>::rot_to3(p.w[index_of(p, 1)]).dot(spin), -6.0 * factor, 1e-12) << n;
     EXPECT_EQ(Space<D>::rot_to3(p.w[index_of(p, 2)]).dot(spin), 5.0) << n;
   }
+}
+
+TYPED_TEST(KuenRun, ParticleContactHalvesSpinEveryStep) {
+  particle_contact_decays_spin<TypeParam::value>(1.0);
+}
+
+TYPED_TEST(KuenRun, ReferenceStepKeepsTheDecayPerUnitTime) {
+  particle_contact_decays_spin<TypeParam::value>(2.0);
 }
 
 }  // namespace

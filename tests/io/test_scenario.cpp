@@ -50,6 +50,7 @@ TEST(Scenario, Full2dFileParsesToTheTypedValues) {
   EXPECT_FALSE(s.contact.dashpot_may_pull);
   EXPECT_DOUBLE_EQ(s.contact.kuen_wall_depth, 0.15e-3);
   EXPECT_DOUBLE_EQ(s.contact.kuen_particle_factor, 0.5);
+  EXPECT_DOUBLE_EQ(s.contact.kuen_reference_step, 3.5e-6);
   // Defaults from dem/params.hpp.
   EXPECT_FALSE(s.contact.lock_rotation);
   EXPECT_DOUBLE_EQ(s.contact.local_damping, 0.0);
@@ -240,6 +241,7 @@ void expect_same(const DemScenario& a, const DemScenario& b) {
   for (auto field :
        {&dem::ContactParams::local_damping, &dem::ContactParams::tangential_damping,
         &dem::ContactParams::kuen_wall_depth, &dem::ContactParams::kuen_particle_factor,
+        &dem::ContactParams::kuen_reference_step,
         &dem::ContactParams::epsd_stiffness_factor, &dem::ContactParams::epsd_damping_ratio}) {
     EXPECT_DOUBLE_EQ(ca.*field, cb.*field);
   }

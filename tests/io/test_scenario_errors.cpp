@@ -131,6 +131,10 @@ INSTANTIATE_TEST_SUITE_P(
                 edit(kBase3d, "model = \"hertz_mindlin\"", "model = \"hertz\" # <-"), "model",
                 "expected one of \"linear\", \"hertz_mindlin\" or \"viscoelastic_hertz\", got "
                 "\"hertz\"; did you mean \"hertz_mindlin\"?"},
+        BadCase{"negative_kuen_reference_step",
+                edit(kBase2d, "model = \"linear\"",
+                     "model = \"linear\"\nkuen_reference_step = -1e-6 # <-"),
+                "kuen_reference_step", "expected a number >= 0, got -1e-06"},
         BadCase{"undefined_wall_material",
                 edit(kBase3d, "type = \"plane\"\nmaterial = \"glass\"",
                      "type = \"plane\"\nmaterial = \"glas\" # <-"),

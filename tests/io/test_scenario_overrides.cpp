@@ -2,6 +2,9 @@
 // overrides that do not fit the file or the schema.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <string>
+
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
@@ -86,7 +89,18 @@ TEST(Overrides, ConflictWithTheFileIsReported) {
   EXPECT_NE(message.find("'friction_angle': give either 'friction' or 'friction_angle'"),
             std::string::npos)
       << message;
-  EXPECT_NE(message.find(kFull2d + ":33:"), std::string::npos) << message;  // friction_angle's line
+  // The line of friction_angle in the file's first [[materials]].
+  std::ifstream in(kFull2d);
+  std::string line;
+  int number = 0, at = 0;
+  bool in_materials = false;
+  while (std::getline(in, line) && at == 0) {
+    ++number;
+    in_materials = in_materials || line.rfind("[[materials]]", 0) == 0;
+    if (in_materials && line.rfind("friction_angle", 0) == 0) at = number;
+  }
+  ASSERT_GT(at, 0);
+  EXPECT_NE(message.find(kFull2d + ":" + std::to_string(at) + ":"), std::string::npos) << message;
 }
 
 TEST(Overrides, MalformedOverridesNameTheFileAndTheOverride) {

@@ -6,7 +6,12 @@
 //    never changing sign. The derivation uses sphere inertia (2/5) and the
 //    weight m g instead of the contact normal force, also for disks.
 //  - between particles: omega <- mu_Br omega every step for a particle with at
-//    least one particle contact.
+//    least one particle contact. That is a rotational damping whose rate,
+//    -ln(mu_Br) / dt, grows as the step shrinks: with half the step Model 3's
+//    grains roll half as fast under the same torque, and the flume's results
+//    move (docs/validation.md, "Time step"). Given a reference step t_ref
+//    (`kuen_reference_step`), the factor per step is mu_Br^(dt / t_ref): the
+//    same decay per unit time as mu_Br at t_ref, whatever the step.
 #include <cmath>
 
 #include "talus/dem/params.hpp"
@@ -28,24 +33,31 @@ class KuenRolling {
       : enabled_(c.rolling == RollingModel::Kuen),
         g_(g),
         u_rr_(c.kuen_wall_depth),
-        mu_br_(c.kuen_particle_factor) {}
+        mu_br_(c.kuen_particle_factor),
+        reference_step_(c.kuen_reference_step) {}
 
   bool enabled() const { return enabled_; }
 
-  // Particle i at the end of a step, after its second half kick.
+  // The factor on omega per step of length dt at a particle contact.
+  double particle_factor(double dt) const {
+    return reference_step_ > 0.0 ? std::pow(mu_br_, dt / reference_step_) : mu_br_;
+  }
+
+  // Particle i at the end of a step, after its second half kick; mu is
+  // particle_factor(dt).
   template <int D>
-  TALUS_HOT void apply(Particles<D>& p, std::size_t i, double dt) const {
+  TALUS_HOT void apply(Particles<D>& p, std::size_t i, double dt, double mu) const {
     if (p.wall_contacts[i] > 0) {
       const double dw = kuen_wall_deceleration(g_, p.r[i], u_rr_) * dt;
       const double w = Space<D>::rot_norm(p.w[i]);
       p.w[i] = w > dw ? (p.w[i] * ((w - dw) / w)) : Space<D>::rot_zero();
     }
-    if (p.contacts[i] > 0) p.w[i] = p.w[i] * mu_br_;
+    if (p.contacts[i] > 0) p.w[i] = p.w[i] * mu;
   }
 
  private:
   bool enabled_ = false;
-  double g_ = 9.81, u_rr_ = 0.0, mu_br_ = 1.0;
+  double g_ = 9.81, u_rr_ = 0.0, mu_br_ = 1.0, reference_step_ = 0.0;
 };
 
 }  // namespace talus::dem

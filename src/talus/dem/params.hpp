@@ -50,6 +50,7 @@ struct ContactParams {
   // Kuen rolling resistance
   double kuen_wall_depth = 0.15e-3;   // u_rr [m]
   double kuen_particle_factor = 0.5;  // mu_Br per step
+  double kuen_reference_step = 0.0;   // s: mu_Br holds at this step; 0 = at every step (Kuen)
   // EPSD (type C) rolling resistance
   double epsd_stiffness_factor = 2.25;  // k_r = factor * mu_r^2 * R_eff^2 * k_n (Ai et al.)
   double epsd_damping_ratio = 0.3;      // eta_r of the critical rotational damping

@@ -72,6 +72,8 @@ dem::ContactParams read_contact(TomlReader& r) {
   c.kuen_wall_depth = number_in(r, "kuen_wall_depth", c.kuen_wall_depth, positive());
   c.kuen_particle_factor =
       number_in(r, "kuen_particle_factor", c.kuen_particle_factor, between(0.0, 1.0, false, false));
+  c.kuen_reference_step =
+      number_in(r, "kuen_reference_step", c.kuen_reference_step, non_negative());
   c.epsd_stiffness_factor =
       number_in(r, "epsd_stiffness_factor", c.epsd_stiffness_factor, positive());
   c.epsd_damping_ratio = number_in(r, "epsd_damping_ratio", c.epsd_damping_ratio, non_negative());

@@ -63,6 +63,7 @@ class Writer {
            {"tangential_damping", c.tangential_damping},
            {"kuen_wall_depth", c.kuen_wall_depth},
            {"kuen_particle_factor", c.kuen_particle_factor},
+           {"kuen_reference_step", c.kuen_reference_step},
            {"epsd_stiffness_factor", c.epsd_stiffness_factor},
            {"epsd_damping_ratio", c.epsd_damping_ratio}};
     Json pairs = Json::array();
