@@ -97,8 +97,8 @@ void particle_contact_decays_spin(double steps_per_halving) {
   // A step far below sqrt(m/k) keeps the slightly overlapping pair together for
   // hundreds of steps while they push apart.
   const double dt = 0.01 * std::sqrt(m / 2 / 1e8);
-  DemScenario sc = kuen_scenario(D, dt, Vec3::Zero(),
-                                 steps_per_halving == 1.0 ? 0.0 : steps_per_halving * dt);
+  DemScenario sc =
+      kuen_scenario(D, dt, Vec3::Zero(), steps_per_halving == 1.0 ? 0.0 : steps_per_halving * dt);
   const Vec3 spin = D == 2 ? Vec3(Vec3::UnitZ()) : Vec3(Vec3::UnitY());
   add_balls(sc, {ball(Vec3::Zero(), Vec3::Zero(), r, "sand", 4.0 * spin),
                  ball(Vec3(2 * r - 1e-6, 0, 0), Vec3::Zero(), r, "sand", -6.0 * spin),

@@ -241,8 +241,8 @@ void expect_same(const DemScenario& a, const DemScenario& b) {
   for (auto field :
        {&dem::ContactParams::local_damping, &dem::ContactParams::tangential_damping,
         &dem::ContactParams::kuen_wall_depth, &dem::ContactParams::kuen_particle_factor,
-        &dem::ContactParams::kuen_reference_step,
-        &dem::ContactParams::epsd_stiffness_factor, &dem::ContactParams::epsd_damping_ratio}) {
+        &dem::ContactParams::kuen_reference_step, &dem::ContactParams::epsd_stiffness_factor,
+        &dem::ContactParams::epsd_damping_ratio}) {
     EXPECT_DOUBLE_EQ(ca.*field, cb.*field);
   }
   ASSERT_EQ(ca.pairs.size(), cb.pairs.size());
