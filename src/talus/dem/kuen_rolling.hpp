@@ -26,6 +26,27 @@ inline double kuen_wall_deceleration(double g, double r, double u_rr) {
   return g * c_rr / (r * (r_rr - 0.4 * r));
 }
 
+// Kuen's rules for one step of length dt: the particle factor is computed once
+// per step, not once per grain (it may need a pow).
+class KuenStep {
+ public:
+  KuenStep(double g, double u_rr, double dt, double mu) : g_(g), u_rr_(u_rr), dt_(dt), mu_(mu) {}
+
+  // Particle i at the end of a step, after its second half kick.
+  template <int D>
+  TALUS_HOT void apply(Particles<D>& p, std::size_t i) const {
+    if (p.wall_contacts[i] > 0) {
+      const double dw = kuen_wall_deceleration(g_, p.r[i], u_rr_) * dt_;
+      const double w = Space<D>::rot_norm(p.w[i]);
+      p.w[i] = w > dw ? (p.w[i] * ((w - dw) / w)) : Space<D>::rot_zero();
+    }
+    if (p.contacts[i] > 0) p.w[i] = p.w[i] * mu_;
+  }
+
+ private:
+  double g_, u_rr_, dt_, mu_;
+};
+
 class KuenRolling {
  public:
   KuenRolling() = default;
@@ -38,21 +59,11 @@ class KuenRolling {
 
   bool enabled() const { return enabled_; }
 
-  // The factor on omega per step of length dt at a particle contact.
-  double particle_factor(double dt) const {
-    return reference_step_ > 0.0 ? std::pow(mu_br_, dt / reference_step_) : mu_br_;
-  }
-
-  // Particle i at the end of a step, after its second half kick; mu is
-  // particle_factor(dt).
-  template <int D>
-  TALUS_HOT void apply(Particles<D>& p, std::size_t i, double dt, double mu) const {
-    if (p.wall_contacts[i] > 0) {
-      const double dw = kuen_wall_deceleration(g_, p.r[i], u_rr_) * dt;
-      const double w = Space<D>::rot_norm(p.w[i]);
-      p.w[i] = w > dw ? (p.w[i] * ((w - dw) / w)) : Space<D>::rot_zero();
-    }
-    if (p.contacts[i] > 0) p.w[i] = p.w[i] * mu;
+  // The rules for a step of length dt; the factor on omega at a particle
+  // contact is mu_Br, or mu_Br^(dt / t_ref) given a reference step.
+  KuenStep at(double dt) const {
+    const double mu = reference_step_ > 0.0 ? std::pow(mu_br_, dt / reference_step_) : mu_br_;
+    return KuenStep(g_, u_rr_, dt, mu);
   }
 
  private:

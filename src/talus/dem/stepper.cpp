@@ -565,7 +565,7 @@ class Stepper final : public StepperBase<D> {
     auto& nl = s_.neighbours;
     Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * acc_stride();
     const bool kuen_on = kuen_.enabled();
-    const double kuen_mu = kuen_on ? kuen_.particle_factor(s_.dt) : 1.0;
+    const KuenStep kuen = kuen_.at(s_.dt);
     int64_t touching = 0;
     for (int i = i0; i < i1; ++i) {
       p.wall_contacts[i] = 0;
@@ -597,7 +597,7 @@ class Stepper final : public StepperBase<D> {
         if (membranes_) membranes_->add_to_grain(p, i);
       if (then_kick) {
         kick_one(p, i, *then_kick);
-        if (kuen_on) kuen_.apply(p, i, s_.dt, kuen_mu);
+        if (kuen_on) kuen.apply(p, i);
       }
     }
 #pragma omp atomic
