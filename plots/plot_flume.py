@@ -6,6 +6,7 @@ Usage: plot_flume.py RUN_DIR   (writes RUN_DIR/plots/flume_*.png and prints thei
   flume_front.png      front position along the path versus time
   flume_deposit.png    final deposit surface over the bed, with the tail and run-up
   flume_forces.png     mean force on chute, arc and barrier (x and y) versus time
+  flume_force_peaks.png  the largest single-step force in each interval, over the mean
 Uses Debian's matplotlib; run with /usr/bin/python3.
 """
 import glob
@@ -128,6 +129,33 @@ def forces_plot(front, summary, out):
     return name
 
 
+def force_peaks_plot(front, out):
+    """The largest force of a single step in each series interval (what a force
+    sensor read every step records: a grain's impact lasts a few dozen steps),
+    with the interval's mean underneath."""
+    if "barrier_fx_peak" not in front:
+        return None
+    fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    for part, colour in (("chute", "C0"), ("arc", "C1"), ("barrier", "C2")):
+        for ax, c in zip(axes, ("fx", "fy")):
+            ax.plot(front["time"], front[f"{part}_{c}_peak"], color=colour, lw=0.7,
+                    label=f"{part}, single step")
+            ax.plot(front["time"], front[f"{part}_{c}"], color=colour, lw=1.6, alpha=0.45,
+                    label=f"{part}, interval mean")
+    axes[0].set_ylabel("F_x on the wall [N/m]")
+    axes[1].set_ylabel("F_y on the wall [N/m]")
+    axes[1].set_xlabel("time [s]")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=3)
+    fig.suptitle("largest single-step force in each series interval, per metre of width")
+    fig.tight_layout()
+    name = os.path.join(out, "flume_force_peaks.png")
+    fig.savefig(name, dpi=120)
+    plt.close(fig)
+    return name
+
+
 def main():
     run = sys.argv[1]
     out = os.path.join(run, "plots")
@@ -138,7 +166,8 @@ def main():
     path = read_columns(os.path.join(run, "flume", "path.csv"))
     front = read_columns(os.path.join(run, "flume", "front.csv"))
     for name in (snapshots(run, path, layers, out), front_plot(front, summary, out),
-                 deposit_plot(run, path, summary, layers, out), forces_plot(front, summary, out)):
+                 deposit_plot(run, path, summary, layers, out), forces_plot(front, summary, out),
+                 force_peaks_plot(front, out)):
         if name:
             print(name)
 

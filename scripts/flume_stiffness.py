@@ -12,7 +12,8 @@ per stiffness cannot show a 5 % effect. This runs every (stiffness, seed) pair
 (the seed changes the release packing), then compares the means over the seeds.
 Stiffness is set for normal and shear, grains and walls (materials 0 and 1).
 Peak = largest barrier force over the series rows, each the mean force over one
-series interval (from the impulse columns; choose a short --series-interval).
+series interval (from the impulse columns; choose a short --series-interval);
+peak_step = the largest barrier force of a single step.
 --until adds the barrier's x impulse accumulated from the start up to each time T
 (the row of series.csv at T), e.g. 1.4 for Kuen's time at which the forces settle:
 the impulse of the impact, without the static load that follows it.
@@ -39,7 +40,8 @@ def run_one(a, k, seed):
     b, arc = f["barrier"], f["arc"]
     r = {"impulse_x": b["impulse_x"], "impulse_y": b["impulse_y"],
          "arc_impulse_y": arc["impulse_y"], "peak_fx": b["peak_fx"],
-         "peak_fx_time": b["peak_fx_time"], "final_fx": b["final_fx"]}
+         "peak_fx_time": b["peak_fx_time"], "final_fx": b["final_fx"],
+         "peak_step_fx": b["peak_step_fx"], "peak_step_fx_time": b["peak_step_fx_time"]}
     r.update(impulse_until(os.path.join(out, "series.csv"), a.until, a.series_interval))
     return r
 
@@ -88,7 +90,7 @@ def main():
             r = run_one(a, k, s)
             res[(k, s)] = r
             print(f"k={k:g} seed={s} " + " ".join(f"{n}={v:.6g}" for n, v in r.items()), flush=True)
-    names = ["impulse_x", "impulse_y", "arc_impulse_y", "peak_fx", "final_fx"]
+    names = ["impulse_x", "impulse_y", "arc_impulse_y", "peak_fx", "peak_step_fx", "final_fx"]
     names += [f"impulse_x_to_{t:g}s" for t in a.until]
     print("\n| stiffness [N/m] | runs | " + " | ".join(names) + " |")
     print("|---" * (len(names) + 2) + "|")

@@ -94,17 +94,23 @@ TEST(FlumeMeasure, TailIsWhereTheUnbrokenThickRunStarts) {
 }
 
 TEST(FlumeSeries, ImpulsePeakAndArrivalFromTheRows) {
-  const std::vector<std::string> cols = {"time",       "front_s",   "runup_s", "runup_height",
-                                         "chute_fx",   "chute_fy",  "arc_fx",  "arc_fy",
-                                         "barrier_fx", "barrier_fy"};
+  const std::vector<std::string> cols = {
+      "time",        "front_s",     "runup_s",         "runup_height",
+      "chute_fx",    "chute_fy",    "arc_fx",          "arc_fy",
+      "barrier_fx",  "barrier_fy",  "chute_fx_peak",   "chute_fy_peak",
+      "arc_fx_peak", "arc_fy_peak", "barrier_fx_peak", "barrier_fy_peak"};
   std::vector<std::vector<double>> rows;
   // 1 s in steps of 0.01 s: constant chute force, a barrier pulse of 100 N
-  // between 0.5 and 0.6 s, the front moving at 2 m/s.
+  // between 0.5 and 0.6 s, the front moving at 2 m/s. The single-step peaks:
+  // the means, but the barrier's 400 N in the interval ending at 0.55 s and
+  // an arc y force of -60 N at 0.3 s, whose interval mean stays -5 N.
   for (int k = 0; k <= 100; ++k) {
     const double t = 0.01 * k, s = 2.0 * t;
     const double pulse = (t > 0.5 + 1e-9 && t <= 0.6 + 1e-9) ? 100.0 : 0.0;
     const double runup = std::max(0.0, s - kA.arc_end_s());
-    rows.push_back({t, s, runup, 0.5 * runup, -10.0, -20.0, 0.0, -5.0, pulse, 0.0});
+    const double barrier_peak = k == 55 ? 400.0 : pulse, arc_peak = k == 30 ? -60.0 : -5.0;
+    rows.push_back({t, s, runup, 0.5 * runup, -10.0, -20.0, 0.0, -5.0, pulse, 0.0, -10.0, -20.0,
+                    0.0, arc_peak, barrier_peak, 0.0});
   }
   const auto sum = summarise_front_series(kA, cols, rows, 0.1);
   // Each row's force is the mean over the interval ending at its time.
@@ -114,6 +120,12 @@ TEST(FlumeSeries, ImpulsePeakAndArrivalFromTheRows) {
   EXPECT_NEAR(sum.peak[2][0].value, 100.0, 1e-12);
   EXPECT_NEAR(sum.peak[2][0].time, 0.51, 1e-12);
   EXPECT_NEAR(sum.final_force[1][1], -5.0, 1e-9);
+  // The step peaks are the extremes of their own columns, signed.
+  EXPECT_EQ(sum.step_peak[2][0].value, 400.0);
+  EXPECT_NEAR(sum.step_peak[2][0].time, 0.55, 1e-12);
+  EXPECT_EQ(sum.step_peak[1][1].value, -60.0);
+  EXPECT_NEAR(sum.step_peak[1][1].time, 0.30, 1e-12);
+  EXPECT_EQ(sum.peak[1][1].value, -5.0);
   EXPECT_NEAR(sum.final_force[2][0], 0.0, 1e-12);
   // The front passes s = chute_end_s at t = chute_end_s / 2, first sampled at the next row.
   EXPECT_NEAR(sum.reach_arc_time, std::ceil(kA.chute_end_s() / 2 / 0.01) * 0.01, 1e-9);

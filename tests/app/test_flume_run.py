@@ -55,11 +55,22 @@ with tempfile.TemporaryDirectory() as tmp:
           0 < f["runup"]["final_s"] <= f["runup"]["max_s"] + 1e-12
           and f["runup"]["max_s"] < f["path"]["path_end_s"] - f["path"]["arc_end_s"])
     check("the main deposit starts upstream of the barrier", f["deposit"]["tail_s"] < f["path"]["arc_end_s"])
+    # The single-step peak of an interval bounds its mean (|mean of f| <= max |f|;
+    # the 1e-9 N/m is round-off of the impulse difference).
+    parts = ("chute", "arc", "barrier")
+    check("each interval's single-step peak bounds its mean force",
+          all(abs(float(r[f"{p}_f{c}_peak"])) >= abs(float(r[f"{p}_f{c}"])) - 1e-9
+              for r in rows for p in parts for c in "xy"))
+    check("the summary's single-step peaks are at least the peak means",
+          all(abs(f["forces"][p][f"peak_step_f{c}"]) >= abs(f["forces"][p][f"peak_f{c}"])
+              for p in parts for c in "xy"))
     frames = sorted(os.listdir(os.path.join(out, "flume", "frames")))
     check("a frame per snapshot (0, 0.5, ..., 2 s)", len(frames) == 5)
     plots = subprocess.run(["/usr/bin/python3", os.path.join(src, "plots", "plot_flume.py"), out],
                            capture_output=True, text=True)
     check("plots are drawn", plots.returncode == 0 and all(
         os.path.getsize(p) > 10000 for p in plots.stdout.split()))
+    check("the force-peak plot is among them",
+          any(p.endswith("flume_force_peaks.png") for p in plots.stdout.split()))
 
 check.finish("flume run")

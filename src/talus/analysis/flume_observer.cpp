@@ -23,6 +23,10 @@ std::vector<std::string> front_columns() {
     c.push_back(std::string(part) + "_fx");
     c.push_back(std::string(part) + "_fy");
   }
+  for (const char* part : kParts) {
+    c.push_back(std::string(part) + "_fx_peak");
+    c.push_back(std::string(part) + "_fy_peak");
+  }
   return c;
 }
 
@@ -111,17 +115,32 @@ void FlumeObserver::on_series(const dem::DemRun<2>& run) {
                              f.runup_height,
                              static_cast<double>(f.on_chute)};
   const double dt = s.time - last_time_;
+  Vec3 peak[3];
   for (std::size_t k = 0; k < 3; ++k) {
     Vec3 mean = Vec3::Zero();
     if (wall_index_[k] >= 0) {
-      const Vec3& impulse = s.walls[wall_index_[k]].impulse;
+      const auto& wall = s.walls[wall_index_[k]];
       // The mean over the interval, from the impulse: a sample of the
       // instantaneous force would only show the contact chatter of one step.
-      if (dt > 0) mean = (impulse - last_impulse_[k]) / dt;
-      last_impulse_[k] = impulse;
+      if (dt > 0) mean = (wall.impulse - last_impulse_[k]) / dt;
+      last_impulse_[k] = wall.impulse;
+      // And the largest force of a single step in the interval, by magnitude
+      // with its sign: the peak of a grain's impact that the mean smooths away.
+      peak[k] = mean;
+      if (wall.has_force_extremes())
+        for (int c = 0; c < 3; ++c)
+          peak[k][c] = std::abs(wall.force_max[c]) >= std::abs(wall.force_min[c])
+                           ? wall.force_max[c]
+                           : wall.force_min[c];
+    } else {
+      peak[k] = mean;
     }
     row.push_back(mean.x());
     row.push_back(mean.y());
+  }
+  for (const Vec3& f : peak) {
+    row.push_back(f.x());
+    row.push_back(f.y());
   }
   last_time_ = s.time;
   front_->row(row);
@@ -215,11 +234,14 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
       part["peak_f" + axis + "_time"] = sum.peak[k][c].time;
       part["impulse_" + axis] = sum.impulse[k][c];
       part["final_f" + axis] = sum.final_force[k][c];
+      part["peak_step_f" + axis] = sum.step_peak[k][c].value;
+      part["peak_step_f" + axis + "_time"] = sum.step_peak[k][c].time;
     }
     j["forces"][kParts[k]] = part;
   }
   j["forces"]["mean_over"] = "series_interval (from impulses)";
   j["forces"]["final_over"] = 0.1;
+  j["forces"]["peak_step_over"] = "every step";
   std::ofstream(dir_ / "summary.json") << j.dump(2) << "\n";
   return j;
 }
@@ -237,10 +259,13 @@ FlumeSeriesSummary summarise_front_series(const geometry::FlumeGeometry& g,
   if (rows.empty()) return out;
   const std::size_t t = col("time"), fs = col("front_s"), rs = col("runup_s"),
                     rh = col("runup_height");
-  std::size_t force[3][2];
+  std::size_t force[3][2], step_peak[3][2];
   for (int k = 0; k < 3; ++k) {
-    force[k][0] = col(std::string(kParts[k]) + "_fx");
-    force[k][1] = col(std::string(kParts[k]) + "_fy");
+    for (int c = 0; c < 2; ++c) {
+      const std::string name = std::string(kParts[k]) + (c == 0 ? "_fx" : "_fy");
+      force[k][c] = col(name);
+      step_peak[k][c] = col(name + "_peak");
+    }
   }
   const double end = rows.back()[t];
   double window = 0.0;
@@ -262,6 +287,9 @@ FlumeSeriesSummary summarise_front_series(const geometry::FlumeGeometry& g,
         const double f = row[force[k][c]];
         auto& peak = out.peak[k][c];
         if (std::abs(f) > std::abs(peak.value)) peak = {f, row[t]};
+        const double fs = row[step_peak[k][c]];
+        auto& sp = out.step_peak[k][c];
+        if (std::abs(fs) > std::abs(sp.value)) sp = {fs, row[t]};
         out.impulse[k][c] += f * dt;
         if (late) out.final_force[k][c] += f * dt;
       }

@@ -2,7 +2,8 @@
 // The flume analysis of a 2D DEM run (spec: flume.md "What a flume run must
 // report"), written into <out>/flume/:
 //   front.csv          front, run-up, grains on the chute and the mean force on
-//                      chute, arc and barrier over each series interval
+//                      chute, arc and barrier over each series interval, then
+//                      the largest force of a single step in it (_peak)
 //   path.csv           the bed line (s, x, y)
 //   layers.csv         initial layer of every grain (by id), for colouring
 //   frames/t_*.csv     x, y, r, layer at each snapshot time (the pictures)
@@ -66,6 +67,8 @@ struct FlumeSeriesSummary {
   // Per wall part (chute, arc, barrier) and component (x, y): the extreme mean
   // force, its time, the impulse and the mean force over the last `settle_window`.
   Peak peak[3][2];
+  // The largest force of a single step (columns <part>_f<c>_peak), and when.
+  Peak step_peak[3][2];
   double impulse[3][2] = {};
   double final_force[3][2] = {};
 };

@@ -236,7 +236,10 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
     s.step = 0;
     for (auto& v : s.particles.v) v.setZero();
     for (auto& w : s.particles.w) w = Space<D>::rot_zero();
-    for (auto& w : s.walls) w.impulse.setZero();
+    for (auto& w : s.walls) {
+      w.impulse.setZero();
+      w.reset_force_extremes();
+    }
     for (auto& m : s.membranes) std::fill(m.body.v.begin(), m.body.v.end(), Vec3::Zero());
   }
   return run;

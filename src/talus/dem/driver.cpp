@@ -156,8 +156,12 @@ RunStats run_dem(DemRun<D>& run, const RunControl& c, const std::vector<DemObser
     }
     check_health(run, e_avail, c.ke_blowup_factor);
     const bool last = s.step == end;
-    if (s.step % c.series_every == 0 || last)
+    if (s.step % c.series_every == 0 || last) {
       for (auto* o : obs) o->on_series(run);
+      // Before a checkpoint: a resumed run starts its first interval with
+      // fresh extremes, as the uninterrupted run does (checkpoints fall on rows).
+      for (auto& w : s.walls) w.reset_force_extremes();
+    }
     if (c.snapshot_every >= 0 && ((c.snapshot_every > 0 && s.step % c.snapshot_every == 0) || last))
       for (auto* o : obs) o->on_snapshot(run);
     if (c.checkpoint_every > 0 && s.step % c.checkpoint_every == 0 && !last)

@@ -214,7 +214,10 @@ class Stepper final : public StepperBase<D> {
   // The bookkeeping of a finished step.
   void close_step() {
     close_forces();
-    for (auto& w : s_.walls) w.impulse += w.force * s_.dt;
+    for (auto& w : s_.walls) {
+      w.impulse += w.force * s_.dt;
+      w.note_force();
+    }
     ++s_.step;
     step_open_ = false;
   }

@@ -14,6 +14,7 @@
 //     a function of time: advance_servo() moves the wall along its normal from
 //     the force of the last step until servo_stop, and displacement() adds the
 //     distance travelled (servo_travel).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,10 +35,29 @@ struct Wall {
   Vec3 force = Vec3::Zero();
   Vec3 torque = Vec3::Zero();
   Vec3 impulse = Vec3::Zero();
+  // Component-wise extremes of `force` over the steps closed since the run
+  // loop last reset them (after each series row): what a force sensor read
+  // every step records. An interval's mean force (from `impulse`) smooths
+  // away a grain's impact, which lasts a few dozen steps; its peak is the
+  // number that changes with the contact stiffness (Kuen 2011 §7.1).
+  Vec3 force_max = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Vec3 force_min = Vec3::Constant(std::numeric_limits<double>::infinity());
   // Servo state: distance moved along servo_normal (the plane's normal, towards
   // the particles) and the speed of the current step.
   Vec3 servo_normal = Vec3::UnitZ();
   double servo_travel = 0.0, servo_speed = 0.0;
+
+  // Takes `force` into the extremes (the solver, once per closed step).
+  void note_force() {
+    force_max = force_max.cwiseMax(force);
+    force_min = force_min.cwiseMin(force);
+  }
+  void reset_force_extremes() {
+    force_max.setConstant(-std::numeric_limits<double>::infinity());
+    force_min.setConstant(std::numeric_limits<double>::infinity());
+  }
+  // False when no step was closed since the last reset.
+  bool has_force_extremes() const { return force_max.x() >= force_min.x(); }
 
   // Recomputes `current` from `reference` and the motion at time t.
   void update(double t);
