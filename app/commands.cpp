@@ -70,6 +70,27 @@ void progress_line(double t, double end, double sps, double dt) {
   std::fflush(stderr);
 }
 
+// The numbers a barrier designer looks at first, from the flume's summary.
+void print_flume_headline(const nlohmann::json& f, double series_interval) {
+  const auto& b = f["forces"]["barrier"];
+  auto when = [](const nlohmann::json& t) {  // -1: never
+    return t.get<double>() < 0 ? std::string("never") : fmt::format("{:.3f} s", t.get<double>());
+  };
+  fmt::print(stderr,
+             "talus: flume: front at the arc {}, at the barrier {}; run-up {:.3f} m "
+             "along the barrier ({:.3f} m high), {:.3f} m at most; main deposit from s = {:.3f} m, "
+             "{} grains upstream of it\n",
+             when(f["front"]["reach_arc_time"]), when(f["front"]["reach_barrier_time"]),
+             f["runup"]["final_s"].get<double>(), f["runup"]["final_height"].get<double>(),
+             f["runup"]["max_s"].get<double>(), f["deposit"]["tail_s"].get<double>(),
+             f["deposit"]["stranded"].get<int>());
+  fmt::print(stderr,
+             "talus: flume: barrier per metre of width: x impulse {:.1f} N s, peak F_x {:.0f} N "
+             "({:.3g} ms mean) and {:.0f} N (single step), F_x at the end {:.0f} N\n",
+             b["impulse_x"].get<double>(), b["peak_fx"].get<double>(), series_interval * 1e3,
+             b["peak_step_fx"].get<double>(), b["final_fx"].get<double>());
+}
+
 template <int D>
 int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunOptions& opt,
                      bool resume) {
@@ -154,9 +175,12 @@ int run_dem_scenario(const dem::DemScenario& sc, const fs::path& out, const RunO
     write_dem_summary<D>(sc, *run, outputs, summary, opt.threads, "failed", e.what());
     throw;
   }
-  if (!opt.quiet)
+  if (!opt.quiet) {
     fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", summary.steps,
                summary.loop_seconds, out.string());
+    if (summary.analysis.contains("flume"))
+      print_flume_headline(summary.analysis["flume"], sc.output.series_interval);
+  }
   return 0;
 }
 

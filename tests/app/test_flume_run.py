@@ -23,9 +23,16 @@ coarse = os.path.join(src, "tests", "data", "scenarios", "flume_A_coarse.toml")
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "run")
-    subprocess.run([talus, "run", coarse, "--out", out, "--quiet", "--threads", "1"], check=True)
+    proc = subprocess.run([talus, "run", coarse, "--out", out, "--threads", "1"], check=True,
+                          capture_output=True, text=True)
     summary = json.load(open(os.path.join(out, "summary.json")))
     f = summary["flume"]
+    # The command line's headline repeats the summary's key numbers.
+    b = f["forces"]["barrier"]
+    check("the headline names arrival, tail and the barrier's peaks",
+          f"at the barrier {f['front']['reach_barrier_time']:.3f} s" in proc.stderr
+          and f"main deposit from s = {f['deposit']['tail_s']:.3f} m" in proc.stderr
+          and f"{b['peak_step_fx']:.0f} N (single step)" in proc.stderr)
     with open(os.path.join(out, "flume", "front.csv")) as fh:
         rows = list(csv.DictReader(fh))
     with open(os.path.join(out, "series.csv")) as fh:
