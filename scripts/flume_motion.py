@@ -3,12 +3,16 @@
 
 Usage: flume_motion.py [--rest V] RUN_DIR...
 Kuen (2011, §6, Model 3) describes the motion from his snapshots: at 0.2 s the
-lowest front grains accelerate fastest while the rearmost stay at rest; "only
+lowest front grains accelerate fastest while the rearmost stay at rest; from
+0.4 s the upper layers move faster than the lower ones and override them; "only
 after one second are all particles in motion"; between 1.0 and 1.2 s the first
 grains come to rest on the barrier and then on the arc. Per snapshot this prints
 the share of grains slower than V (default 0.01 m/s) and slower than 5 V, the
-median speed, and the share of the resting grains that lie downstream of the
-chute's end (on arc or barrier).
+median speed, the share of the resting grains that lie downstream of the
+chute's end (on arc or barrier), and the mean speed along the chute of the grains
+in the upper and the lower half of the local flow depth on the chute between the
+gate and the arc (5 cm stretches of the chute, depth = the highest grain's height
+above the bed in the stretch; stretches with fewer than 20 grains left out).
 """
 import argparse
 import csv
@@ -28,6 +32,36 @@ def chute_end_x(run):
     return float(np.interp(s_end, s, x))
 
 
+def chute_frame(run):
+    """Gate foot and unit vectors along (downstream) and normal (up) to the chute."""
+    rows = [(float(r["s"]), float(r["x"]), float(r["y"]))
+            for r in csv.DictReader(open(os.path.join(run, "flume", "path.csv")))]
+    s, x, y = (np.array(c) for c in zip(*rows))
+    foot = np.array([np.interp(0.0, s, x), np.interp(0.0, s, y)])
+    along = np.array([x[1] - x[0], y[1] - y[0]])
+    along /= np.linalg.norm(along)
+    return foot, along, np.array([-along[1], along[0]])
+
+
+def upper_lower(p, v, run, s_end):
+    """Mean speed along the chute of the upper and lower half of the flow depth."""
+    foot, along, up = chute_frame(run)
+    s = (p - foot) @ along
+    h = (p - foot) @ up
+    u = v @ along
+    upper, lower = [], []
+    for lo in np.arange(0.0, s_end, 0.05):
+        m = (s >= lo) & (s < lo + 0.05)
+        if m.sum() < 20:
+            continue
+        depth = h[m].max()
+        upper.extend(u[m][h[m] > 0.5 * depth])
+        lower.extend(u[m][h[m] <= 0.5 * depth])
+    if not upper or not lower:
+        return "     -        -"
+    return f"{np.mean(upper):8.3f} {np.mean(lower):8.3f}"
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("runs", nargs="+")
@@ -35,21 +69,25 @@ def main():
     a = p.parse_args()
     for run in a.runs:
         x_end = chute_end_x(run)
+        s_end = json.load(open(os.path.join(run, "summary.json")))["flume"]["path"]["chute_end_s"]
         pvd = open(os.path.join(run, "particles.pvd")).read()
         print(f"{run}: chute ends at x = {x_end:.3f} m")
-        print("   t [s]  resting  below 5V  median speed [m/s]  resting grains past the chute")
+        print("   t [s]  resting  below 5V  median speed [m/s]  resting grains past the chute"
+              "  speed on the chute [m/s]: upper half, lower half")
         for t, name in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', pvd):
             reader = vtk.vtkXMLUnstructuredGridReader()
             reader.SetFileName(os.path.join(run, name))
             reader.Update()
             grid = reader.GetOutput()
             v = vtk_to_numpy(grid.GetPointData().GetArray("velocity"))
-            x = vtk_to_numpy(grid.GetPoints().GetData())[:, 0]
+            pos = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+            x = pos[:, 0]
             speed = np.linalg.norm(v, axis=1)
             rest = speed < a.rest
             past = f"{np.mean(x[rest] > x_end) * 100:5.1f} %" if rest.any() else "    -"
             print(f"  {float(t):6.2f}  {np.mean(rest) * 100:5.1f} %  {np.mean(speed < 5 * a.rest) * 100:5.1f} %"
-                  f"   {np.median(speed):8.3f}            {past}")
+                  f"   {np.median(speed):8.3f}            {past}"
+                  f"                  {upper_lower(pos, v[:, :2], run, s_end)}")
 
 
 if __name__ == "__main__":
