@@ -37,6 +37,26 @@ def draw_grains(ax, frame, layers):
                                         edgecolors="none"))
 
 
+def save(fig, out, filename, dpi):
+    """Writes the figure to out/filename and returns that path."""
+    fig.tight_layout()
+    name = os.path.join(out, filename)
+    fig.savefig(name, dpi=dpi)
+    plt.close(fig)
+    return name
+
+
+def force_axes():
+    """The two stacked panels (F_x above F_y) of the force figures."""
+    fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    axes[0].set_ylabel("F_x on the wall [N/m]")
+    axes[1].set_ylabel("F_y on the wall [N/m]")
+    axes[1].set_xlabel("time [s]")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    return fig, axes
+
+
 def snapshots(run, path, layers, out):
     frames = sorted(glob.glob(os.path.join(run, "flume", "frames", "t_*.csv")))
     if not frames:
@@ -56,11 +76,7 @@ def snapshots(run, path, layers, out):
         ax.set_ylim(min(path["y"]) - 0.05, max(path["y"]) + 0.05)
         ax.set_title(f"t = {t:.2f} s", fontsize=9)
     fig.suptitle("grains coloured by their initial layer (bottom = dark)")
-    fig.tight_layout()
-    name = os.path.join(out, "flume_snapshots.png")
-    fig.savefig(name, dpi=110)
-    plt.close(fig)
-    return name
+    return save(fig, out, "flume_snapshots.png", 110)
 
 
 def front_plot(front, summary, out):
@@ -73,11 +89,7 @@ def front_plot(front, summary, out):
     ax.set_ylabel("path distance from the gate [m]")
     ax.legend()
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    name = os.path.join(out, "flume_front.png")
-    fig.savefig(name, dpi=120)
-    plt.close(fig)
-    return name
+    return save(fig, out, "flume_front.png", 120)
 
 
 def deposit_plot(run, path, summary, layers, out):
@@ -101,32 +113,20 @@ def deposit_plot(run, path, summary, layers, out):
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     ax.legend(loc="upper left", fontsize=8)
-    fig.tight_layout()
-    name = os.path.join(out, "flume_deposit.png")
-    fig.savefig(name, dpi=130)
-    plt.close(fig)
-    return name
+    return save(fig, out, "flume_deposit.png", 130)
 
 
 def forces_plot(front, summary, out):
-    fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    fig, axes = force_axes()
     for part, colour in (("chute", "C0"), ("arc", "C1"), ("barrier", "C2")):
         axes[0].plot(front["time"], front[part + "_fx"], color=colour, label=part)
         axes[1].plot(front["time"], front[part + "_fy"], color=colour, label=part)
     weight = summary["deposit"]["weight_per_m"]
     axes[1].axhline(-weight, color="0.4", ls=":", label="total weight of the grains")
-    axes[0].set_ylabel("F_x on the wall [N/m]")
-    axes[1].set_ylabel("F_y on the wall [N/m]")
-    axes[1].set_xlabel("time [s]")
     for ax in axes:
-        ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle("mean force over each series interval, per metre of flume width")
-    fig.tight_layout()
-    name = os.path.join(out, "flume_forces.png")
-    fig.savefig(name, dpi=120)
-    plt.close(fig)
-    return name
+    return save(fig, out, "flume_forces.png", 120)
 
 
 def force_peaks_plot(front, out):
@@ -135,25 +135,17 @@ def force_peaks_plot(front, out):
     with the interval's mean underneath."""
     if "barrier_fx_peak" not in front:
         return None
-    fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    fig, axes = force_axes()
     for part, colour in (("chute", "C0"), ("arc", "C1"), ("barrier", "C2")):
         for ax, c in zip(axes, ("fx", "fy")):
             ax.plot(front["time"], front[f"{part}_{c}_peak"], color=colour, lw=0.7,
                     label=f"{part}, single step")
             ax.plot(front["time"], front[f"{part}_{c}"], color=colour, lw=1.6, alpha=0.45,
                     label=f"{part}, interval mean")
-    axes[0].set_ylabel("F_x on the wall [N/m]")
-    axes[1].set_ylabel("F_y on the wall [N/m]")
-    axes[1].set_xlabel("time [s]")
     for ax in axes:
-        ax.grid(alpha=0.3)
         ax.legend(fontsize=7, ncol=3)
     fig.suptitle("largest single-step force in each series interval, per metre of width")
-    fig.tight_layout()
-    name = os.path.join(out, "flume_force_peaks.png")
-    fig.savefig(name, dpi=120)
-    plt.close(fig)
-    return name
+    return save(fig, out, "flume_force_peaks.png", 120)
 
 
 def main():

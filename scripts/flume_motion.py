@@ -25,27 +25,22 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 
-def chute_end_x(run):
+def chute(run):
+    """Gate foot, unit vectors along (downstream) and normal (up) to the straight
+    chute, and the chute's end as a path coordinate."""
     s_end = json.load(open(os.path.join(run, "summary.json")))["flume"]["path"]["chute_end_s"]
-    rows = [(float(r["s"]), float(r["x"])) for r in csv.DictReader(open(os.path.join(run, "flume", "path.csv")))]
-    s, x = zip(*rows)
-    return float(np.interp(s_end, s, x))
-
-
-def chute_frame(run):
-    """Gate foot and unit vectors along (downstream) and normal (up) to the chute."""
     rows = [(float(r["s"]), float(r["x"]), float(r["y"]))
             for r in csv.DictReader(open(os.path.join(run, "flume", "path.csv")))]
     s, x, y = (np.array(c) for c in zip(*rows))
     foot = np.array([np.interp(0.0, s, x), np.interp(0.0, s, y)])
     along = np.array([x[1] - x[0], y[1] - y[0]])
     along /= np.linalg.norm(along)
-    return foot, along, np.array([-along[1], along[0]])
+    return foot, along, np.array([-along[1], along[0]]), s_end
 
 
-def upper_lower(p, v, run, s_end):
+def upper_lower(p, v, frame):
     """Mean speed along the chute of the upper and lower half of the flow depth."""
-    foot, along, up = chute_frame(run)
+    foot, along, up, s_end = frame
     s = (p - foot) @ along
     h = (p - foot) @ up
     u = v @ along
@@ -68,8 +63,8 @@ def main():
     p.add_argument("--rest", type=float, default=0.01, help="speed below which a grain rests [m/s]")
     a = p.parse_args()
     for run in a.runs:
-        x_end = chute_end_x(run)
-        s_end = json.load(open(os.path.join(run, "summary.json")))["flume"]["path"]["chute_end_s"]
+        frame = chute(run)
+        x_end = (frame[0] + frame[3] * frame[1])[0]
         pvd = open(os.path.join(run, "particles.pvd")).read()
         print(f"{run}: chute ends at x = {x_end:.3f} m")
         print("   t [s]  resting  below 5V  median speed [m/s]  resting grains past the chute"
@@ -87,7 +82,7 @@ def main():
             past = f"{np.mean(x[rest] > x_end) * 100:5.1f} %" if rest.any() else "    -"
             print(f"  {float(t):6.2f}  {np.mean(rest) * 100:5.1f} %  {np.mean(speed < 5 * a.rest) * 100:5.1f} %"
                   f"   {np.median(speed):8.3f}            {past}"
-                  f"                  {upper_lower(pos, v[:, :2], run, s_end)}")
+                  f"                  {upper_lower(pos, v[:, :2], frame)}")
 
 
 if __name__ == "__main__":

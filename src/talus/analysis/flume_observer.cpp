@@ -118,22 +118,16 @@ void FlumeObserver::on_series(const dem::DemRun<2>& run) {
   Vec3 peak[3];
   for (std::size_t k = 0; k < 3; ++k) {
     Vec3 mean = Vec3::Zero();
+    peak[k] = mean;
     if (wall_index_[k] >= 0) {
       const auto& wall = s.walls[wall_index_[k]];
       // The mean over the interval, from the impulse: a sample of the
       // instantaneous force would only show the contact chatter of one step.
       if (dt > 0) mean = (wall.impulse - last_impulse_[k]) / dt;
       last_impulse_[k] = wall.impulse;
-      // And the largest force of a single step in the interval, by magnitude
-      // with its sign: the peak of a grain's impact that the mean smooths away.
-      peak[k] = mean;
-      if (wall.has_force_extremes())
-        for (int c = 0; c < 3; ++c)
-          peak[k][c] = std::abs(wall.force_max[c]) >= std::abs(wall.force_min[c])
-                           ? wall.force_max[c]
-                           : wall.force_min[c];
-    } else {
-      peak[k] = mean;
+      // And the largest force of a single step in the interval: the peak of
+      // a grain's impact that the mean smooths away.
+      peak[k] = wall.largest_force(mean);
     }
     row.push_back(mean.x());
     row.push_back(mean.y());
@@ -255,6 +249,9 @@ FlumeSeriesSummary summarise_front_series(const geometry::FlumeGeometry& g,
     if (it == columns.end()) throw RunError("front.csv: no column '" + name + "'");
     return static_cast<std::size_t>(it - columns.begin());
   };
+  auto keep_larger = [](FlumeSeriesSummary::Peak& peak, double f, double time) {
+    if (std::abs(f) > std::abs(peak.value)) peak = {f, time};
+  };
   FlumeSeriesSummary out;
   if (rows.empty()) return out;
   const std::size_t t = col("time"), fs = col("front_s"), rs = col("runup_s"),
@@ -285,11 +282,8 @@ FlumeSeriesSummary summarise_front_series(const geometry::FlumeGeometry& g,
     for (int k = 0; k < 3; ++k) {
       for (int c = 0; c < 2; ++c) {
         const double f = row[force[k][c]];
-        auto& peak = out.peak[k][c];
-        if (std::abs(f) > std::abs(peak.value)) peak = {f, row[t]};
-        const double fs = row[step_peak[k][c]];
-        auto& sp = out.step_peak[k][c];
-        if (std::abs(fs) > std::abs(sp.value)) sp = {fs, row[t]};
+        keep_larger(out.peak[k][c], f, row[t]);
+        keep_larger(out.step_peak[k][c], row[step_peak[k][c]], row[t]);
         out.impulse[k][c] += f * dt;
         if (late) out.final_force[k][c] += f * dt;
       }

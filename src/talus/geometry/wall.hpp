@@ -14,6 +14,7 @@
 //     a function of time: advance_servo() moves the wall along its normal from
 //     the force of the last step until servo_stop, and displacement() adds the
 //     distance travelled (servo_travel).
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -56,8 +57,15 @@ struct Wall {
     force_max.setConstant(-std::numeric_limits<double>::infinity());
     force_min.setConstant(std::numeric_limits<double>::infinity());
   }
-  // False when no step was closed since the last reset.
-  bool has_force_extremes() const { return force_max.x() >= force_min.x(); }
+  // Per component the extreme of larger magnitude, with its sign; `fallback`
+  // when no step was closed since the last reset.
+  Vec3 largest_force(const Vec3& fallback) const {
+    if (!(force_max.x() >= force_min.x())) return fallback;
+    Vec3 out;
+    for (int c = 0; c < 3; ++c)
+      out[c] = std::abs(force_max[c]) >= std::abs(force_min[c]) ? force_max[c] : force_min[c];
+    return out;
+  }
 
   // Recomputes `current` from `reference` and the motion at time t.
   void update(double t);
