@@ -64,7 +64,8 @@ def main():
     a = p.parse_args()
     for run in a.runs:
         frame = chute(run)
-        x_end = (frame[0] + frame[3] * frame[1])[0]
+        foot, along, _, s_end = frame
+        x_end = (foot + s_end * along)[0]  # the chute is straight from the gate foot
         pvd = open(os.path.join(run, "particles.pvd")).read()
         print(f"{run}: chute ends at x = {x_end:.3f} m")
         print("   t [s]  resting  below 5V  median speed [m/s]  resting grains past the chute"
