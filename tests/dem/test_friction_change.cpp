@@ -1,4 +1,4 @@
-// A friction change during a run (driver.hpp FrictionChange; the granular
+// A friction change during a run (dem/friction_change.hpp; the granular
 // beam's μ_init -> μ_p of Götz 2024 §5.3): a block sliding down an incline
 // accelerates at g (sin θ - μ cos θ) with the old μ before the change and
 // with the new one after it, and the change is applied once.
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/dem/driver.hpp"
 #include "verification_cases.hpp"
 
 namespace talus::dem {
@@ -18,12 +18,14 @@ using namespace verification;
 
 constexpr double kG = 9.81;
 
-struct SpeedLog final : DemObserver<3> {
-  std::vector<double> t, v;
-  void on_series(const DemRun<3>& run) override {
+struct SpeedLog final : run::Observer {
+  explicit SpeedLog(const DemRun<3>& r) : run(r) {}
+  void on_series() override {
     t.push_back(run.system.time);
     v.push_back(run.system.particles.v[0].x());
   }
+  const DemRun<3>& run;
+  std::vector<double> t, v;
 };
 
 TEST(FrictionChange, BlockSlidesWithTheOldThenTheNewFriction) {
@@ -42,12 +44,12 @@ TEST(FrictionChange, BlockSlidesWithTheOldThenTheNewFriction) {
       std::pow(3 * m * kG * std::cos(theta) / (4 * e_star * std::sqrt(R)), 2.0 / 3.0);
   add_balls(sc, {ball((R - overlap) * Vec3::UnitZ(), Vec3::Zero(), R, "grain")});
   auto run = build_dem<3>(sc, {});
-  RunControl c;
+  run::DemControl c;
   c.duration = 0.2;
-  c.series_every = std::llround(0.05 / run->system.dt);
+  c.series_interval = 0.05;
   c.friction_change = FrictionChange{0.1, mu1, {0}};
-  SpeedLog log;
-  run_dem<3>(*run, c, {&log}, true);
+  SpeedLog log(*run);
+  test::run_dem<3>(*run, c, {&log});
   ASSERT_EQ(log.t.size(), 5u);  // 0, 0.05, 0.1, 0.15, 0.2 s
   EXPECT_DOUBLE_EQ(run->system.materials[0].friction, mu1);
   auto accel = [&](int a, int b) { return (log.v[b] - log.v[a]) / (log.t[b] - log.t[a]); };

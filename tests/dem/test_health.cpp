@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "peer_case.hpp"
+#include "support/dem_loop.hpp"
 #include "talus/core/error.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/dem/driver.hpp"
 
 using namespace talus;
 using namespace talus::dem;
@@ -14,10 +14,10 @@ using namespace talus::dem;
 TEST(Health, UnstableTimeStepStopsTheRunWithADiagnosis) {
   auto run = build_dem<3>(cases::peer_column(6, 4, 12), {});
   run->system.dt = 8.0 * run->system.critical_time_step;
-  RunControl c;
+  run::DemControl c;
   c.duration = 4000 * run->system.dt;
   try {
-    run_dem<3>(*run, c, {}, true);
+    test::run_dem<3>(*run, c);
     FAIL() << "the unstable run was not stopped";
   } catch (const RunError& e) {
     const std::string what = e.what();

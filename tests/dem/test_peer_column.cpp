@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "peer_case.hpp"
+#include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/dem/driver.hpp"
 
 using namespace talus;
 using namespace talus::dem;
@@ -36,12 +36,12 @@ TEST(PeerColumn, LatticeJitterMatchesReferencePositions) {
 // to 7 digits at step 1000). We ask for 1e-4 relative.
 TEST(PeerColumn, EarlyKineticEnergyMatchesLiggghts) {
   auto run = build_dem<3>(cases::peer_column(20, 10, 40), {});
-  RunControl c;
+  run::DemControl c;
   c.duration = 500 * 5e-6;
-  run_dem<3>(*run, c, {}, true);
+  test::run_dem<3>(*run, c);
   EXPECT_NEAR(kinetic_energy(run->system.particles), 2.37894e-5, 2.37894e-5 * 1e-4);
   c.duration = 1000 * 5e-6;
-  run_dem<3>(*run, c, {}, false);
+  test::run_dem<3>(*run, c, {}, false);
   EXPECT_NEAR(kinetic_energy(run->system.particles), 8.05036e-5, 8.05036e-5 * 1e-4);
 }
 
@@ -53,11 +53,11 @@ TEST(PeerColumn, TwoThreadsAreDeterministicAndAgreeWithOne) {
   auto one = build_dem<3>(cases::peer_column(10, 10, 20), {1, true});
   auto two = build_dem<3>(cases::peer_column(10, 10, 20), {2, true});
   auto again = build_dem<3>(cases::peer_column(10, 10, 20), {2, true});
-  RunControl c;
+  run::DemControl c;
   c.duration = 600 * 5e-6;
-  run_dem<3>(*one, c, {}, true);
-  run_dem<3>(*two, c, {}, true);
-  run_dem<3>(*again, c, {}, true);
+  test::run_dem<3>(*one, c);
+  test::run_dem<3>(*two, c);
+  test::run_dem<3>(*again, c);
   const auto& a = two->system.particles;
   const auto& b = again->system.particles;
   ASSERT_EQ(a.size(), b.size());

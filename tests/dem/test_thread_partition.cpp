@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "peer_case.hpp"
+#include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/dem/driver.hpp"
 #include "talus/dem/thread_partition.hpp"
 
 using namespace talus;
@@ -71,9 +71,9 @@ const DemSystem<3>& slumped_column() {
   static const auto run = [] {
     const auto sc = cases::peer_column(10, 10, 20);
     auto r = build_dem<3>(sc, {});
-    RunControl c;
+    run::DemControl c;
     c.duration = 4000 * sc.run.time_step;
-    run_dem<3>(*r, c, {}, true);
+    test::run_dem<3>(*r, c);
     return r;
   }();
   return run->system;

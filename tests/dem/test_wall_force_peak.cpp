@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "talus/dem/driver.hpp"
+#include "support/dem_loop.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -25,13 +25,17 @@ struct Row {
 };
 
 template <int D>
-class FloorRecorder final : public DemObserver<D> {
+class FloorRecorder final : public run::Observer {
  public:
-  void on_series(const DemRun<D>& run) override {
-    const auto& w = run.system.walls.at(0);
-    rows.push_back({run.system.time, w.force_max, w.force_min, w.impulse});
+  explicit FloorRecorder(const DemRun<D>& run) : run_(run) {}
+  void on_series() override {
+    const auto& w = run_.system.walls.at(0);
+    rows.push_back({run_.system.time, w.force_max, w.force_min, w.impulse});
   }
   std::vector<Row<D>> rows;
+
+ private:
+  const DemRun<D>& run_;
 };
 
 template <class Dim>
@@ -53,12 +57,12 @@ TYPED_TEST(WallForcePeak, SingleStepPeakOfAnImpactAndResetPerRow) {
   auto run = build_dem<D>(sc, {});
   // Rows at 1.5 t_c (the whole contact inside), 3 t_c and 4.5 t_c (the
   // particle flies off, no contact).
-  RunControl c;
+  run::DemControl c;
   c.duration = 4.5 * t_c;
-  c.series_every = 6000;
-  c.snapshot_every = -1;
-  FloorRecorder<D> rec;
-  run_dem<D>(*run, c, {&rec}, true);
+  c.series_interval = 6000 * dt;
+  c.snapshot_interval = -1;
+  FloorRecorder<D> rec(*run);
+  test::run_dem<D>(*run, c, {&rec});
   ASSERT_EQ(rec.rows.size(), 4u);  // t = 0 and three intervals
 
   // t = 0: no step closed yet, so no extremes.

@@ -2,8 +2,8 @@
 // since the last build must trigger a rebuild, whatever the direction.
 #include <gtest/gtest.h>
 
+#include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/dem/driver.hpp"
 #include "talus/geometry/stl.hpp"
 #include "verification_cases.hpp"
 
@@ -28,10 +28,10 @@ TEST(WallMotion, VibratingWallFindsParticlesOnEitherSide) {
   // Centre 0.5 r below the lowest floor position minus r: overlap 0.5 r at t = 0.1 s.
   add_balls(sc, {ball(Vec3(0, 0, -amplitude - 0.5 * r), Vec3::Zero(), r, "glass")});
   auto run = build_dem<3>(sc, {});
-  RunControl c;
+  run::DemControl c;
   c.duration = 0.5 / frequency;
   c.ke_blowup_factor = 0.0;  // the wall feeds energy in
-  run_dem<3>(*run, c, {}, true);
+  test::run_dem<3>(*run, c);
   const auto& p = run->system.particles;
   // The floor moves at up to 2 pi f A = 0.063 m/s; the struck sphere leaves downwards.
   EXPECT_LT(p.v[0].z(), -0.01);
@@ -74,9 +74,9 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
     // the contact radius (~0.1 mm).
     add_balls(sc, {ball(at + Vec3(0, 0, 1.05 * r), Vec3(0, 0, -0.1), r, "glass")});
     auto run = build_dem<3>(sc, {});
-    RunControl c;
+    run::DemControl c;
     c.duration = 2e-3;
-    run_dem<3>(*run, c, {}, true);
+    test::run_dem<3>(*run, c);
     if (candidates) {
       const auto& nl = run->system.neighbours;
       *candidates = static_cast<std::size_t>(nl.wall_start[1] - nl.wall_start[0]);
@@ -135,8 +135,8 @@ TEST(Settling, GateRemovedAtStartHoldsThePackingWhileItSettles) {
   EXPECT_GT(run->system.settle_time, 0.05);
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_LT(p.x[i].x() + p.r[i], gate_x + 1e-4);
   // After the release the column spreads past the gate's former place.
-  RunControl c;
+  run::DemControl c;
   c.duration = 0.3;
-  run_dem<2>(*run, c, {}, true);
+  test::run_dem<2>(*run, c);
   EXPECT_GT(front_x(run->system.particles), gate_x + 0.01);
 }

@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "talus/core/space.hpp"
-#include "talus/mpm/driver.hpp"
+#include "talus/mpm/metrics.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {

@@ -11,9 +11,10 @@
 #include "talus/core/error.hpp"
 #include "talus/io/scenario.hpp"
 #include "talus/io/scenario_mpm.hpp"
-#include "talus/mpm/driver.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/scenario.hpp"
+#include "talus/run/loop.hpp"
+#include "talus/run/methods/mpm.hpp"
 
 namespace talus::mpm {
 namespace {
@@ -92,12 +93,11 @@ TEST(MpmHealth, DilatantRunStopsWithTheAngleNamed) {
       std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block_plan.toml",
       {"grid.cell_size=0.02", "materials.0.dilatancy_angle=10", "run.duration=0.05"});
   const MpmScenario sc = io::parse_mpm_scenario(file);
-  Solver<2> s = build_mpm<2>(sc);
-  MpmRunControl control;
-  control.duration = sc.duration;
-  control.snapshot_interval = -1.0;
+  run::MpmSimulation<2> sim(sc, build_mpm<2>(sc));
+  run::RunLoop loop(sim, {});
   try {
-    run_mpm<2>(s, control, {});
+    loop.start(true);
+    loop.run();
     ADD_FAILURE() << "the run did not stop";
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find("dilatancy angle of 10 deg is above 2.8 deg"),

@@ -7,6 +7,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_runout.hpp"
+#include "talus/run/methods/runout.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/release.hpp"
 
@@ -71,14 +72,14 @@ TEST(DanEnergy, UnstableFlumeRunStopsWithEnergyBlowUp) {
   sc.params.pressure_form = PressureForm::Gradient;
   sc.release.blocks = 400;
   try {
-    simulate_dan(sc);
+    run::simulate_dan(sc);
     FAIL() << "the unstable run was not stopped";
   } catch (const RunError& e) {
     EXPECT_NE(std::string(e.what()).find("energy blow-up"), std::string::npos) << e.what();
   }
   // The same run in the divergence form is stable and passes the check.
   sc.params.pressure_form = PressureForm::Divergence;
-  EXPECT_NO_THROW(simulate_dan(sc));
+  EXPECT_NO_THROW(run::simulate_dan(sc));
 }
 
 TEST(DanEnergy, BundledScenariosPassTheCheck) {
@@ -88,7 +89,7 @@ TEST(DanEnergy, BundledScenariosPassTheCheck) {
   for (const char* name : {"runout_flume_A.toml", "runout_profile_slope.toml"}) {
     const RunoutScenario sc = bundled(name);
     ASSERT_GT(sc.params.energy_growth_tolerance, 0.0);
-    EXPECT_NO_THROW(simulate_dan(sc)) << name;
+    EXPECT_NO_THROW(run::simulate_dan(sc)) << name;
   }
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "talus/io/scenario_runout.hpp"
+#include "talus/run/loop.hpp"
+#include "talus/run/methods/runout.hpp"
 #include "talus/runout/builder.hpp"
 
 namespace talus::runout {
@@ -23,12 +25,13 @@ FlumeRun run_flume(std::size_t blocks, double courant) {
   sc.release.blocks = blocks;
   sc.control.courant = courant;
   sc.control.time_step = 0;  // auto
-  auto setup = build_dan(sc);
-  const double v0 = setup.model.deformed_volume();
-  RunoutTracker tracker(setup.barrier_start_s, sc.tail_fraction);
-  run_dan(setup.model, sc.control, tracker, {});
-  return {tracker.results(), setup.model.blocks().s.back(),
-          std::abs(setup.model.deformed_volume() - v0) / v0};
+  run::DanSimulation sim(sc);
+  const double v0 = sim.model().deformed_volume();
+  run::RunLoop loop(sim, {});
+  loop.start(true);
+  loop.run();
+  return {sim.results(), sim.model().blocks().s.back(),
+          std::abs(sim.model().deformed_volume() - v0) / v0};
 }
 
 TEST(DanFlume, RunsAndReportsFlumeResults) {
@@ -53,7 +56,7 @@ TEST(DanFlume, RunsAndReportsFlumeResults) {
   EXPECT_GE(res.tail_s, res.tail_s_absolute);
   // simulate_dan (for talus compare) is the same run without files.
   const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout_flume_A.toml";
-  const auto same = simulate_dan(io::parse_runout_scenario(io::load_scenario_file(file, {})));
+  const auto same = run::simulate_dan(io::parse_runout_scenario(io::load_scenario_file(file, {})));
   EXPECT_EQ(same.runup_max.s, res.runup_max.s);
   EXPECT_EQ(same.front.size(), res.front.size());
 }

@@ -5,6 +5,8 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_runout.hpp"
+#include "talus/run/loop.hpp"
+#include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
 
 namespace talus::io {
@@ -37,12 +39,15 @@ TEST(Fv2dScenario, BundledScenarioBuildsAndConservesVolume) {
   EXPECT_NEAR(solver.terrain().elevation()[sc.grid.shape.index(66, 20)] -
                   sc.grid.elevation[sc.grid.shape.index(66, 20)],
               4.0, 1e-12);
-  runout::Fv2dMaxima maxima;
-  auto control = runout::fv2d_run_control(sc);
-  control.duration = 20.0;
-  runout::run_fv2d(solver, control, maxima, {});
-  EXPECT_GT(maxima.peak_speed, 5.0);
-  EXPECT_LT(std::abs(solver.volume() + solver.outflow_volume() - 7200.0) / 7200.0, 1e-12);
+  auto shorter = sc;
+  shorter.control.duration = 20.0;
+  run::Fv2dSimulation sim(shorter);
+  run::RunLoop loop(sim, {});
+  loop.start(true);
+  loop.run();
+  const auto& after = sim.solver();
+  EXPECT_GT(sim.maxima().peak_speed, 5.0);
+  EXPECT_LT(std::abs(after.volume() + after.outflow_volume() - 7200.0) / 7200.0, 1e-12);
 }
 
 TEST(Fv2dScenario, ResolvedTomlReadsBack) {

@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/dem/membrane/beam_rig.hpp"
 #include "talus/io/csv_writer.hpp"
 
@@ -55,11 +55,11 @@ BeamMembrane find_beam_membrane(const dem::DemScenario& sc, const dem::DemSystem
 // Mean z of the particles `set` (the deflection's measure).
 double mean_z(const std::vector<int>& set, std::span<const Vec3> x);
 
-class BeamObserver final : public dem::DemObserver<3> {
+class BeamObserver final {
  public:
   // Throws InputError when the scenario has no [beam] or no membrane has the rig.
   BeamObserver(std::filesystem::path out, const dem::DemScenario& sc, const dem::DemSystem<3>& s);
-  void on_series(const dem::DemRun<3>& run) override;
+  void on_series(const dem::DemRun<3>& run);
   // The steps' table and the fit (loading branch) with the span and section
   // measured when the supports were pinned and with the membrane's rest size,
   // the largest gap between the loading and unloading branches; writes

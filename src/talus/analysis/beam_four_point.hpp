@@ -24,7 +24,7 @@
 #include <span>
 #include <vector>
 
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/csv_writer.hpp"
 
 namespace talus::analysis {
@@ -64,13 +64,13 @@ inline constexpr double kFourPointLinearStrain = 0.002;
 nlohmann::json four_point_curve(std::span<const double> strain, std::span<const double> stress,
                                 double linear_strain, double yield_smoothing);
 
-class FourPointObserver final : public dem::DemObserver<3> {
+class FourPointObserver final {
  public:
   // Throws InputError when the scenario has no four-point [beam] or no
   // membrane has the rig.
   FourPointObserver(std::filesystem::path out, const dem::DemScenario& sc,
                     const dem::DemSystem<3>& s);
-  void on_series(const dem::DemRun<3>& run) override;
+  void on_series(const dem::DemRun<3>& run);
   // E_b, Y_b, the largest strain and stress, and the geometry used.
   nlohmann::json finish() const;
 

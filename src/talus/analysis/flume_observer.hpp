@@ -18,22 +18,22 @@
 #include <vector>
 
 #include "talus/analysis/flume_measure.hpp"
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/frame.hpp"
 
 namespace talus::analysis {
 
-class FlumeObserver final : public dem::DemObserver<2> {
+class FlumeObserver final {
  public:
   // resume = true continues the files of a run interrupted at resume_time.
   FlumeObserver(std::filesystem::path out, const geometry::FlumeGeometry& geometry,
                 const dem::FlumeParams& params, const dem::DemSystem<2>& system, bool resume,
                 double resume_time);
 
-  void on_series(const dem::DemRun<2>& run) override;
-  void on_snapshot(const dem::DemRun<2>& run) override;
-  void on_checkpoint(const dem::DemRun<2>& run) override;
+  void on_series(const dem::DemRun<2>& run);
+  void on_snapshot(const dem::DemRun<2>& run);
+  void on_checkpoint(const dem::DemRun<2>& run);
 
   // Adds the "layer" field to a particle snapshot (for ParaView).
   void add_layers(const dem::DemSystem<2>& system, io::ParticleFrame& frame) const;

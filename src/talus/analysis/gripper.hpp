@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/csv_writer.hpp"
 
 namespace talus::analysis {
@@ -34,13 +34,13 @@ enum class GripperPhase {
 GripperPhase gripper_phase(const dem::GripperParams& g, double t);
 std::string phase_name(GripperPhase p);
 
-class GripperObserver final : public dem::DemObserver<3> {
+class GripperObserver final {
  public:
   // Throws InputError when the scenario has no [gripper] or the system no object.
   GripperObserver(std::filesystem::path out, const dem::DemScenario& sc,
                   const dem::DemSystem<3>& s);
-  void on_series(const dem::DemRun<3>& run) override;
-  void on_checkpoint(const dem::DemRun<3>& run) override;
+  void on_series(const dem::DemRun<3>& run);
+  void on_checkpoint(const dem::DemRun<3>& run);
   // The holding force and where it was reached; the largest push force; the
   // phase times; the object's last contacts (0: pulled free).
   nlohmann::json finish() const;

@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/csv_writer.hpp"
 
 namespace talus::analysis {
@@ -62,14 +62,14 @@ double object_pressure(const dem::DemSystem<3>& s, const HollowSphereSetup& h);
 // Mean distance of the outer membrane's particles from the centre.
 double shell_mean_radius(const dem::DemSystem<3>& s, const HollowSphereSetup& h);
 
-class HollowSphereObserver final : public dem::DemObserver<3> {
+class HollowSphereObserver final {
  public:
   // resume = true continues the hollow_sphere.csv of a run resumed at
   // resume_time: the rows up to it are kept and read back for the plateau.
   HollowSphereObserver(std::filesystem::path out, const dem::DemScenario& sc,
                        const dem::DemSystem<3>& s, bool resume = false, double resume_time = 0.0);
-  void on_series(const dem::DemRun<3>& run) override;
-  void on_checkpoint(const dem::DemRun<3>& run) override;
+  void on_series(const dem::DemRun<3>& run);
+  void on_checkpoint(const dem::DemRun<3>& run);
   // p_vac, radii, nu, the continuum value, and p_obj at the end and as the
   // mean over the plateau (the second half of the time after the ramp).
   nlohmann::json finish() const;

@@ -14,7 +14,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/csv_writer.hpp"
 
 namespace talus::analysis {
@@ -40,7 +40,7 @@ double gap_at_servo_stop(const dem::DemSystem<3>& s, const TriaxialSetup& t);
 // (the membrane's initial axis).
 double membrane_mean_radius(const dem::DemSystem<3>& s, const TriaxialSetup& t, const Vec3& axis);
 
-class TriaxialObserver final : public dem::DemObserver<3> {
+class TriaxialObserver final {
  public:
   // resume = true continues the triaxial.csv of a run resumed at
   // resume_time (the system as restored from its checkpoint), after the run's
@@ -48,9 +48,9 @@ class TriaxialObserver final : public dem::DemObserver<3> {
   // read back from both files (see restore()).
   TriaxialObserver(std::filesystem::path out, const dem::DemScenario& sc,
                    const dem::DemSystem<3>& s, bool resume = false, double resume_time = 0.0);
-  void on_series(const dem::DemRun<3>& run) override;
+  void on_series(const dem::DemRun<3>& run);
   // Flushes triaxial.csv: a resumed run reads it back up to the checkpoint.
-  void on_checkpoint(const dem::DemRun<3>& run) override;
+  void on_checkpoint(const dem::DemRun<3>& run);
   // h0, the pressures at the switch, the peak deviator stress and its strain,
   // the final strain: for summary.json.
   nlohmann::json finish() const;

@@ -234,9 +234,8 @@ void DemOutputs<D>::on_checkpoint(const DemRun<D>& run) {
 }
 
 template <int D>
-void DemOutputs<D>::on_progress(double time, double end, double steps_per_s) {
+void DemOutputs<D>::flush() {
   series_->flush();
-  if (progress) progress(time, end, steps_per_s);
 }
 
 template class DemOutputs<2>;

@@ -7,7 +7,7 @@
 #include <functional>
 #include <memory>
 
-#include "talus/dem/driver.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/frame.hpp"
 #include "talus/io/vtk_writer.hpp"
@@ -15,19 +15,19 @@
 namespace talus::dem {
 
 template <int D>
-class DemOutputs final : public DemObserver<D> {
+class DemOutputs final {
  public:
   // resume = true continues the files of an interrupted run, dropping what was
   // written after the checkpoint at `resume_time`.
   DemOutputs(std::filesystem::path dir, const DemSystem<D>& system, bool resume,
              double resume_time);
 
-  void on_series(const DemRun<D>& run) override;
-  void on_snapshot(const DemRun<D>& run) override;
-  void on_checkpoint(const DemRun<D>& run) override;
-  void on_progress(double time, double end, double steps_per_s) override;
+  void on_series(const DemRun<D>& run);
+  void on_snapshot(const DemRun<D>& run);
+  void on_checkpoint(const DemRun<D>& run);
+  // Flushes the files a user may follow during the run.
+  void flush();
 
-  std::function<void(double, double, double)> progress;  // set by the app
   // Adds fields of an analysis (e.g. the flume's initial layer) to each particle snapshot.
   std::function<void(const DemSystem<D>&, io::ParticleFrame&)> decorate;
 

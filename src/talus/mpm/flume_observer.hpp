@@ -15,19 +15,19 @@
 
 #include "talus/analysis/flume_measure.hpp"
 #include "talus/io/csv_writer.hpp"
-#include "talus/mpm/driver.hpp"
+#include "talus/mpm/metrics.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
 
-class MpmFlumeObserver final : public MpmObserver<2> {
+class MpmFlumeObserver final {
  public:
   // resume = true continues front.csv of a run interrupted at resume_time.
   MpmFlumeObserver(std::filesystem::path out, const MpmFlumeParams& params, const Solver<2>& solver,
                    bool resume, double resume_time);
 
-  void on_series(const Solver<2>& s) override;
-  void on_checkpoint(const Solver<2>& s) override;
+  void on_series(const Solver<2>& s);
+  void on_checkpoint(const Solver<2>& s);
 
   // Writes the deposit files of the final state and returns the summary
   // numbers (front and run-up histories read back from front.csv, so that a

@@ -140,10 +140,9 @@ void MpmOutputs<D>::on_snapshot(const Solver<D>& s) {
 }
 
 template <int D>
-void MpmOutputs<D>::on_progress(double time, double end, double steps_per_s) {
+void MpmOutputs<D>::flush() {
   series_->flush();
   if (membranes_) membranes_->flush();
-  if (progress) progress(time, end, steps_per_s);
 }
 
 template class MpmOutputs<2>;

@@ -11,13 +11,13 @@
 
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/vtk_writer.hpp"
-#include "talus/mpm/driver.hpp"
 #include "talus/mpm/membrane_output.hpp"
+#include "talus/mpm/metrics.hpp"
 
 namespace talus::mpm {
 
 template <int D>
-class MpmOutputs final : public MpmObserver<D> {
+class MpmOutputs final {
  public:
   // initial_cohesion: c0 per material, for c/c0. resume = true continues the
   // files of a run interrupted after its checkpoint at resume_time (dropping
@@ -26,13 +26,12 @@ class MpmOutputs final : public MpmObserver<D> {
   MpmOutputs(std::filesystem::path dir, std::vector<double> initial_cohesion, bool resume = false,
              double resume_time = 0.0);
 
-  void on_series(const Solver<D>& s) override;
-  void on_snapshot(const Solver<D>& s) override;
+  void on_series(const Solver<D>& s);
+  void on_snapshot(const Solver<D>& s);
   // Flushes the series, then writes checkpoint.bin.
-  void on_checkpoint(const Solver<D>& s) override;
-  void on_progress(double time, double end, double steps_per_s) override;
-
-  std::function<void(double, double, double)> progress;  // set by the app
+  void on_checkpoint(const Solver<D>& s);
+  // Flushes the files a user may follow during the run.
+  void flush();
 
   // Headline values seen in the series, for the summary.
   double peak_kinetic_energy = 0.0, peak_kinetic_energy_time = 0.0;

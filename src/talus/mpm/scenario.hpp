@@ -80,7 +80,7 @@ struct MpmScenario {
   std::string name, description;
   int dimension = 2;
   double duration = 0.0;
-  double ke_blowup_factor = 10.0;  // mpm/driver.hpp
+  double ke_blowup_factor = 10.0;  // mpm/health.hpp
   SolverParams solver;
   GridParams grid;
   std::vector<MaterialParams> materials;

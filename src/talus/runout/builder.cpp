@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
-#include "talus/runout/driver.hpp"
 #include "talus/runout/release.hpp"
 
 namespace talus::runout {
@@ -30,13 +29,6 @@ DanSetup build_dan(const RunoutScenario& sc) {
   }
   DanBlocks blocks = blocks_from_polygon(path, polygon, sc.release.blocks);
   return {DanModel(std::move(path), sc.params, std::move(blocks)), barrier_s};
-}
-
-RunoutResults simulate_dan(const RunoutScenario& scenario) {
-  DanSetup setup = build_dan(scenario);
-  RunoutTracker tracker(setup.barrier_start_s, scenario.tail_fraction);
-  run_dan(setup.model, scenario.control, tracker, {});
-  return tracker.results();
 }
 
 }  // namespace talus::runout

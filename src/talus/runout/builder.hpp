@@ -18,8 +18,4 @@ DanSetup build_dan(const RunoutScenario& scenario);
 // DEM scenario uses).
 RunoutPath build_path(const PathSpec& spec);
 
-// Builds and runs a scenario without writing anything (for `talus compare`
-// and calibration): the flume results of the finished run.
-RunoutResults simulate_dan(const RunoutScenario& scenario);
-
 }  // namespace talus::runout

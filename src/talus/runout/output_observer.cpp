@@ -59,9 +59,7 @@ void DanOutputs::write_path(const RunoutPath& path) {
   path_written_ = true;
 }
 
-void DanOutputs::on_progress(double time, double end, double steps_per_s) {
-  if (progress) progress(time, end, steps_per_s);
-}
+void DanOutputs::flush() { series_->flush(); }
 
 void DanOutputs::write_results(const RunoutResults& r) const {
   io::CsvSeries deposit(dir_ / "deposit.csv",

@@ -11,20 +11,20 @@
 
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/vtk_writer.hpp"
-#include "talus/runout/driver.hpp"
+#include "talus/runout/dan.hpp"
+#include "talus/runout/results.hpp"
 
 namespace talus::runout {
 
-class DanOutputs final : public DanObserver {
+class DanOutputs final {
  public:
   explicit DanOutputs(std::filesystem::path dir);
-  void on_series(const DanModel& model) override;
-  void on_snapshot(const DanModel& model) override;
-  void on_progress(double time, double end, double steps_per_s) override;
+  void on_series(const DanModel& model);
+  void on_snapshot(const DanModel& model);
+  // Flushes the files a user may follow during the run.
+  void flush();
   // Writes deposit.csv and front.csv from the finished results.
   void write_results(const RunoutResults& results) const;
-
-  std::function<void(double, double, double)> progress;  // set by the app
 
  private:
   void write_path(const RunoutPath& path);

@@ -8,9 +8,7 @@
 
 #include "talus/geometry/flume.hpp"
 #include "talus/runout/dan.hpp"
-#include "talus/runout/driver.hpp"
 #include "talus/runout/grid/fv2d.hpp"
-#include "talus/runout/grid/fv2d_run.hpp"
 
 namespace talus::runout {
 
@@ -61,6 +59,16 @@ struct GridSpec {
   double max_time_step = 0.1;  // s
 };
 
+// How long a runout run goes and when it writes (both models).
+struct RunoutControl {
+  double duration = 1.0;           // s
+  double time_step = 0.0;          // s; 0 = from the stability limit every step (DAN)
+  double courant = 0.5;            // DAN
+  double series_interval = 0.01;   // s; also the front sampling
+  double snapshot_interval = 0.0;  // s; 0 = first and last only
+  bool stop_at_rest = true;        // end early once the mass has stopped
+};
+
 struct RunoutScenario {
   std::string name, description;
   RunoutModel model = RunoutModel::Dan;
@@ -68,7 +76,7 @@ struct RunoutScenario {
   DanParams params;
   PathSpec path;
   ReleaseSpec release;
-  DanRunControl control;
+  RunoutControl control;
   double tail_fraction = 0.1;
 };
 

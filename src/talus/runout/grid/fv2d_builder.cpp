@@ -23,14 +23,4 @@ Fv2dSolver build_fv2d(const RunoutScenario& sc) {
   return Fv2dSolver(Terrain(sc.grid.shape, std::move(bed)), fv2d_params(sc), sc.grid.release_depth);
 }
 
-Fv2dRunControl fv2d_run_control(const RunoutScenario& sc) {
-  Fv2dRunControl c;
-  c.duration = sc.control.duration;
-  c.max_time_step = sc.grid.max_time_step;
-  c.series_interval = sc.control.series_interval;
-  c.stop_at_rest = sc.control.stop_at_rest;
-  c.progress_seconds = sc.control.progress_seconds;
-  return c;
-}
-
 }  // namespace talus::runout

@@ -8,6 +8,5 @@ namespace talus::runout {
 Fv2dParams fv2d_params(const RunoutScenario& scenario);
 // Terrain = elevation + obstacles; initial depth = the release grid.
 Fv2dSolver build_fv2d(const RunoutScenario& scenario);
-Fv2dRunControl fv2d_run_control(const RunoutScenario& scenario);
 
 }  // namespace talus::runout

@@ -23,9 +23,7 @@ void Fv2dOutputs::on_series(const Fv2dSolver& s) {
                 static_cast<double>(flowing) * s.terrain().shape().cell_area()});
 }
 
-void Fv2dOutputs::on_progress(double time, double end, double steps_per_s) {
-  if (progress) progress(time, end, steps_per_s);
-}
+void Fv2dOutputs::flush() { series_->flush(); }
 
 void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const {
   io::Raster r;

@@ -8,19 +8,18 @@
 #include <memory>
 
 #include "talus/io/csv_writer.hpp"
-#include "talus/runout/grid/fv2d_run.hpp"
+#include "talus/runout/grid/fv2d_maxima.hpp"
 #include "talus/runout/scenario.hpp"
 
 namespace talus::runout {
 
-class Fv2dOutputs final : public Fv2dObserver {
+class Fv2dOutputs final {
  public:
   Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid);
-  void on_series(const Fv2dSolver& solver) override;
-  void on_progress(double time, double end, double steps_per_s) override;
+  void on_series(const Fv2dSolver& solver);
+  // Flushes the files a user may follow during the run.
+  void flush();
   void write_results(const Fv2dSolver& solver, const Fv2dMaxima& maxima) const;
-
-  std::function<void(double, double, double)> progress;  // set by the app
 
  private:
   std::filesystem::path dir_;

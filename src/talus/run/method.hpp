@@ -1,0 +1,45 @@
+#pragma once
+// The method registry: each method (DEM, MPM, DAN, fv2d) says which scenario
+// files it runs, how it validates one and how it builds a running Simulation.
+// A new method lives in run/methods/<name>.cpp and is added to the list in
+// run/methods/registry.cpp with one line.
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "talus/io/scenario.hpp"
+#include "talus/run/simulation.hpp"
+
+namespace talus::run {
+
+struct RunContext {
+  std::filesystem::path out;  // the run folder: created and empty, or the run to resume
+  int threads = 1;
+  bool resume = false;
+  // Makes the folder of a fresh run; a method calls it once its input is
+  // checked, before writing scenario.toml.
+  std::function<void()> prepare = [] {};
+};
+
+struct Method {
+  std::string name;  // "dem", "mpm", "dan", "fv2d"
+  // True when this method runs the file: its `method` key, and `run.model`
+  // where several methods share one ("runout").
+  std::function<bool(const io::ScenarioFile&)> accepts;
+  // Parses and builds without running; returns what `talus validate` prints
+  // after the file name. Throws InputError.
+  std::function<std::string(const io::ScenarioFile&)> validate;
+  // A fresh run writes the resolved scenario (scenario.toml) into ctx.out and
+  // builds; a resumed one builds from it and restores checkpoint.bin.
+  std::function<std::unique_ptr<Simulation>(const io::ScenarioFile&, const RunContext&)> create;
+  bool checkpoints = true;  // whether a run can be resumed
+};
+
+// Every registered method, in registration order.
+const std::vector<Method>& methods();
+// The method that runs `file`; InputError naming the file when none does.
+const Method& method_for(const io::ScenarioFile& file);
+
+}  // namespace talus::run

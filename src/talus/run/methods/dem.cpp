@@ -1,0 +1,220 @@
+#include "talus/run/methods/dem.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "talus/dem/checkpoint.hpp"
+#include "talus/dem/health.hpp"
+#include "talus/run/methods/methods.hpp"
+
+namespace talus::run {
+
+DemControl dem_control(const dem::DemScenario& sc) {
+  DemControl c;
+  c.duration = sc.run.duration;
+  c.series_interval = sc.output.series_interval;
+  c.snapshot_interval = sc.output.write_snapshots ? sc.output.snapshot_interval : -1.0;
+  c.checkpoint_interval = sc.output.checkpoint_interval;
+  c.ke_blowup_factor = sc.run.ke_blowup_factor;
+  if (sc.beam && sc.beam->bending_friction) {
+    dem::FrictionChange f{sc.beam->bending_start, *sc.beam->bending_friction, {}};
+    // The grains' materials: those the particle sources name.
+    for (std::size_t k = 0; k < sc.materials.size(); ++k)
+      for (const auto& src : sc.sources)
+        if (src.material == sc.materials[k].name) {
+          f.materials.push_back(static_cast<int>(k));
+          break;
+        }
+    c.friction_change = f;
+  }
+  return c;
+}
+
+namespace {
+
+class NoFiles final : public Observer {};
+
+template <int D>
+class DemFiles final : public Observer {
+ public:
+  DemFiles(dem::DemOutputs<D>& files, const dem::DemRun<D>& run) : files_(files), run_(run) {}
+  void on_series() override { files_.on_series(run_); }
+  void on_snapshot() override { files_.on_snapshot(run_); }
+  void on_checkpoint() override { files_.on_checkpoint(run_); }
+  void on_progress() override { files_.flush(); }
+
+ private:
+  dem::DemOutputs<D>& files_;
+  const dem::DemRun<D>& run_;
+};
+
+}  // namespace
+
+template <int D>
+DemSimulation<D>::DemSimulation(dem::DemRun<D>& run, DemControl control)
+    : run_(run), control_(std::move(control)), outputs_observer_(std::make_unique<NoFiles>()) {}
+
+template <int D>
+DemSimulation<D>::DemSimulation(dem::DemScenario scenario, std::unique_ptr<dem::DemRun<D>> run,
+                                const std::filesystem::path& out, bool resume, int threads)
+    : owned_(std::move(run)),
+      run_(*owned_),
+      control_(dem_control(scenario)),
+      scenario_(std::move(scenario)),
+      threads_(threads) {
+  files_ = std::make_unique<dem::DemOutputs<D>>(out, run_.system, resume, run_.system.time);
+  outputs_observer_ = std::make_unique<DemFiles<D>>(*files_, run_);
+}
+
+template <int D>
+Schedules DemSimulation<D>::schedules() const {
+  const double dt = run_.system.dt;
+  Schedules s;
+  s.series = OutputSchedule(control_.series_interval > 0 ? control_.series_interval : 100.0 * dt);
+  s.snapshots = OutputSchedule(control_.snapshot_interval);
+  s.checkpoints =
+      OutputSchedule(control_.checkpoint_interval > 0 ? control_.checkpoint_interval : -1);
+  return s;
+}
+
+template <int D>
+void DemSimulation<D>::start(bool fresh) {
+  auto& s = run_.system;
+  end_step_ = std::llround(control_.duration / s.dt);
+  available_ = dem::available_energy(s);
+  const auto& f = control_.friction_change;
+  change_step_ = f ? std::llround(f->time / s.dt) : std::numeric_limits<std::int64_t>::max();
+  // Due already (a resumed run past it, or a change at t = 0): before anything.
+  changed_before_ = s.step >= change_step_;
+  if (changed_before_) dem::apply_friction_change(run_, *f);
+  health_every_ = std::max<std::int64_t>(1, std::min<std::int64_t>(1000, end_step_ / 100 + 1));
+  if (fresh)
+    run_.stepper->prime();
+  else
+    run_.stepper->resume();
+}
+
+// The first step whose time reaches t (time = step * dt exactly).
+template <int D>
+std::int64_t DemSimulation<D>::step_reaching(double t) const {
+  const double dt = run_.system.dt;
+  auto n = static_cast<std::int64_t>(std::ceil(t / dt));
+  while (n > 0 && static_cast<double>(n - 1) * dt >= t) --n;
+  while (static_cast<double>(n) * dt < t) ++n;
+  return n;
+}
+
+template <int D>
+void DemSimulation<D>::advance(double target, double tolerance, std::int64_t max_steps) {
+  auto& s = run_.system;
+  std::int64_t goal = std::min(end_step_, step_reaching(target - tolerance));
+  if (max_steps < end_step_ - s.step) goal = std::min(goal, s.step + max_steps);
+  while (s.step < goal) {
+    std::int64_t next = std::min(goal, (s.step / health_every_ + 1) * health_every_);
+    if (s.step < change_step_) next = std::min(next, change_step_);
+    run_.stepper->advance(next - s.step);
+    if (s.step == change_step_ && !changed_before_) {
+      dem::apply_friction_change(run_, *control_.friction_change);
+      run_.stepper->resume();
+    }
+    dem::check_health(run_, available_, control_.ke_blowup_factor);
+  }
+}
+
+template <int D>
+void DemSimulation<D>::after_series() {
+  // Before a checkpoint: a resumed run starts its first interval with fresh
+  // extremes, as the uninterrupted run does (checkpoints fall on rows).
+  for (auto& w : run_.system.walls) w.reset_force_extremes();
+}
+
+template <int D>
+MethodReport DemSimulation<D>::report() const {
+  using nlohmann::json;
+  const auto& s = run_.system;
+  const auto& p = s.particles;
+  MethodReport r;
+  r.method = "dem";
+  r.dimension = D;
+  r.rate_key = "particle_steps_per_s";
+  r.items = static_cast<double>(p.size());
+  if (scenario_) r.scenario = io::scenario_to_json(*scenario_);
+  json walls = json::array();
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    const auto& wall = s.walls[w];
+    walls.push_back({{"name", wall.name},
+                     {"force_N", {wall.force.x(), wall.force.y(), wall.force.z()}},
+                     {"peak_force_N", files_ ? files_->peak_wall_force[w] : 0.0},
+                     {"impulse_Ns", {wall.impulse.x(), wall.impulse.y(), wall.impulse.z()}}});
+  }
+  r.resolved = {{"time_step_s", s.dt},
+                {"critical_time_step_s", s.critical_time_step},
+                {"reference_impact_speed_m_s", s.reference_speed},
+                {"skin_m", s.skin},
+                {"settle_time_s", s.settle_time},
+                {"threads", threads_}};
+  r.metrics = {{"particles", p.size()},
+               {"particles_removed", s.removed},
+               {"kinetic_energy_J", dem::kinetic_energy(p)},
+               {"rotational_energy_J", dem::rotational_energy(p)},
+               {"peak_kinetic_energy_J", files_ ? files_->peak_kinetic_energy : 0.0},
+               {"peak_kinetic_energy_time_s", files_ ? files_->peak_kinetic_energy_time : 0.0},
+               {"front_x_m", dem::front_x(p)},
+               {"top_m", dem::top(p)},
+               {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
+               {"walls", walls}};
+  r.run_extra = {{"neighbour_builds", s.neighbours.builds}};
+  return r;
+}
+
+template class DemSimulation<2>;
+template class DemSimulation<3>;
+
+namespace {
+
+template <int D>
+std::unique_ptr<Simulation> create_dem(const dem::DemScenario& sc, const RunContext& ctx) {
+  auto run = dem::build_dem<D>(sc, {ctx.threads, !ctx.resume, !ctx.resume});
+  if (ctx.resume) {
+    dem::load_checkpoint(run->system, dem::DemOutputs<D>::checkpoint_path(ctx.out));
+    run->system.threads = ctx.threads;
+  }
+  return std::make_unique<DemSimulation<D>>(sc, std::move(run), ctx.out, ctx.resume, ctx.threads);
+}
+
+template <int D>
+std::string validate_dem(const dem::DemScenario& sc) {
+  // Building places the particles and checks the time step, without settling.
+  auto run = dem::build_dem<D>(sc, {1, false});
+  return fmt::format("{}D DEM, {} particles, {} walls, time step {:.3g} s, critical {:.3g} s", D,
+                     run->system.particles.size(), sc.walls.size(), run->system.dt,
+                     run->system.critical_time_step);
+}
+
+}  // namespace
+
+Method dem_method() {
+  Method m;
+  m.name = "dem";
+  m.accepts = [](const io::ScenarioFile& f) { return f.method == "dem"; };
+  m.validate = [](const io::ScenarioFile& f) {
+    const auto sc = io::parse_dem_scenario(f);
+    return sc.run.dimension == 2 ? validate_dem<2>(sc) : validate_dem<3>(sc);
+  };
+  m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
+    const auto sc = io::parse_dem_scenario(f);
+    if (!ctx.resume) {
+      ctx.prepare();
+      // The resolved scenario makes the run reproducible and resumable.
+      std::ofstream(ctx.out / "scenario.toml") << io::scenario_to_toml(sc);
+    }
+    return sc.run.dimension == 2 ? create_dem<2>(sc, ctx) : create_dem<3>(sc, ctx);
+  };
+  return m;
+}
+
+}  // namespace talus::run

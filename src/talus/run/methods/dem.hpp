@@ -1,0 +1,68 @@
+#pragma once
+// The DEM method on the run loop: steps a DemRun in chunks of whole steps,
+// checks its health, applies a scheduled friction change, and writes its
+// files through DemOutputs. Tests and experiments use DemSimulation directly.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "talus/dem/builder.hpp"
+#include "talus/dem/friction_change.hpp"
+#include "talus/dem/output_observer.hpp"
+#include "talus/run/simulation.hpp"
+
+namespace talus::run {
+
+struct DemControl {
+  double duration = 0.0;
+  double series_interval = 0.0;      // s; 0 = every 100 steps
+  double snapshot_interval = 0.0;    // s; 0 = first and last only; < 0 = none
+  double checkpoint_interval = 0.0;  // s; 0 = none
+  double ke_blowup_factor = 10.0;    // <= 0: no energy check
+  std::optional<dem::FrictionChange> friction_change;
+};
+
+DemControl dem_control(const dem::DemScenario& scenario);
+
+template <int D>
+class DemSimulation : public Simulation {
+ public:
+  // Steps `run` (owned by the caller) without writing files.
+  DemSimulation(dem::DemRun<D>& run, DemControl control);
+  // A run of `scenario` writing into `out` (resume: continuing its files).
+  DemSimulation(dem::DemScenario scenario, std::unique_ptr<dem::DemRun<D>> run,
+                const std::filesystem::path& out, bool resume, int threads);
+
+  double time() const override { return run_.system.time; }
+  std::int64_t steps() const override { return run_.system.step; }
+  double end_time() const override { return static_cast<double>(end_step_) * run_.system.dt; }
+  double time_step() const override { return run_.system.dt; }
+  Schedules schedules() const override;
+  void start(bool fresh) override;
+  void advance(double target, double tolerance, std::int64_t max_steps) override;
+  Observer& outputs() override { return *outputs_observer_; }
+  void after_series() override;
+  MethodReport report() const override;
+
+  dem::DemRun<D>& dem_run() { return run_; }
+  const dem::DemRun<D>& dem_run() const { return run_; }
+  const dem::DemScenario* scenario() const { return scenario_ ? &*scenario_ : nullptr; }
+  dem::DemOutputs<D>* files() { return files_.get(); }
+
+ private:
+  std::int64_t step_reaching(double t) const;
+
+  std::unique_ptr<dem::DemRun<D>> owned_;
+  dem::DemRun<D>& run_;
+  DemControl control_;
+  std::optional<dem::DemScenario> scenario_;
+  std::unique_ptr<dem::DemOutputs<D>> files_;
+  std::unique_ptr<Observer> outputs_observer_;
+  int threads_ = 1;
+  std::int64_t end_step_ = 0, change_step_ = 0, health_every_ = 1;
+  bool changed_before_ = false;
+  double available_ = 0.0;
+};
+
+}  // namespace talus::run

@@ -1,0 +1,179 @@
+// The MPM method on the run loop: one CFL step at a time, landing exactly on
+// the end time; the energy watch of mpm/health.hpp every tenth step.
+#include "talus/run/methods/mpm.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "talus/io/scenario_mpm.hpp"
+#include "talus/mpm/checkpoint.hpp"
+#include "talus/mpm/health.hpp"
+#include "talus/mpm/metrics.hpp"
+#include "talus/mpm/output_observer.hpp"
+#include "talus/mpm/scenario.hpp"
+#include "talus/run/methods/methods.hpp"
+
+namespace talus::run {
+
+namespace {
+
+template <int D>
+class MpmFiles final : public Observer {
+ public:
+  MpmFiles(mpm::MpmOutputs<D>& files, const mpm::Solver<D>& s) : files_(files), s_(s) {}
+  void on_series() override { files_.on_series(s_); }
+  void on_snapshot() override { files_.on_snapshot(s_); }
+  void on_checkpoint() override { files_.on_checkpoint(s_); }
+  void on_progress() override { files_.flush(); }
+
+ private:
+  mpm::MpmOutputs<D>& files_;
+  const mpm::Solver<D>& s_;
+};
+
+std::vector<double> initial_cohesions(const mpm::MpmScenario& sc) {
+  std::vector<double> c0;
+  for (const auto& m : sc.materials) c0.push_back(mpm::initial_cohesion(m));
+  return c0;
+}
+
+}  // namespace
+
+template <int D>
+MpmSimulation<D>::MpmSimulation(mpm::MpmScenario scenario, mpm::Solver<D> solver,
+                                const std::filesystem::path& out, bool resume, int threads)
+    : scenario_(std::move(scenario)), solver_(std::move(solver)), threads_(threads) {
+  if (out.empty()) {
+    files_observer_ = std::make_unique<Observer>();
+    return;
+  }
+  files_ =
+      std::make_unique<mpm::MpmOutputs<D>>(out, initial_cohesions(scenario_), resume, solver_.time);
+  files_observer_ = std::make_unique<MpmFiles<D>>(*files_, solver_);
+}
+
+template <int D>
+Schedules MpmSimulation<D>::schedules() const {
+  const auto& o = scenario_.output;
+  Schedules s;
+  s.series = OutputSchedule(o.series_interval > 0 ? o.series_interval : scenario_.duration / 200.0);
+  s.snapshots = OutputSchedule(o.snapshots ? o.snapshot_interval : -1.0);
+  s.checkpoints = OutputSchedule(o.checkpoint_interval > 0 ? o.checkpoint_interval : -1.0);
+  return s;
+}
+
+template <int D>
+void MpmSimulation<D>::start(bool /*fresh*/) {
+  // Not checked while a rigid body is driven (it feeds energy in).
+  blowup_ = mpm::drives_energy_in(solver_) ? 0.0 : scenario_.ke_blowup_factor;
+  available_ = blowup_ > 0.0 ? mpm::available_energy(solver_) : 0.0;
+}
+
+template <int D>
+void MpmSimulation<D>::advance(double target, double tolerance, std::int64_t max_steps) {
+  auto& s = solver_;
+  const double end = end_time();
+  for (std::int64_t taken = 0; taken < max_steps; ++taken) {
+    if (s.time >= target - tolerance || s.time >= end - this->tolerance()) break;
+    double dt = s.time_step();
+    // Land exactly on the end time.
+    if (s.time + dt > end) dt = end - s.time;
+    s.step(dt);
+    const bool last = s.time >= end - this->tolerance();
+    // Every 10th step: an O(n) sum beside a step of many O(n) passes.
+    if (blowup_ > 0.0 && (s.steps % 10 == 0 || last)) mpm::check_energy(s, available_, blowup_);
+  }
+}
+
+template <int D>
+MethodReport MpmSimulation<D>::report() const {
+  using nlohmann::json;
+  const auto& s = solver_;
+  const auto& p = s.particles;
+  int yielding = 0, cracked = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    yielding += p.state[i].yielding;
+    const double c0 = mpm::initial_cohesion(scenario_.materials[p.material[i]]);
+    cracked += c0 > 0.0 && p.state[i].cohesion < c0;
+  }
+  const double front = mpm::front_x(p), height = mpm::top(p, s.gravity());
+  MethodReport r;
+  r.method = "mpm";
+  r.dimension = D;
+  r.scenario = io::mpm_scenario_to_json(scenario_);
+  r.rate_key = "point_steps_per_s";
+  r.items = static_cast<double>(p.size());
+  r.resolved = {{"last_time_step_s", s.last_dt},
+                {"cell_size_m", s.grid.h},
+                {"gimp_half_width_over_h", s.params.gimp_half_width},
+                {"grid_nodes", s.grid.nodes()},
+                {"threads", threads_}};
+  r.metrics = {{"points", p.size()},          {"kinetic_energy_J", mpm::kinetic_energy(p)},
+               {"front_x_m", front},          {"top_m", height},
+               {"yielding_points", yielding}, {"cracked_points", cracked}};
+  if (!files_) return r;  // the peaks and changes are read from the series
+  r.metrics["peak_kinetic_energy_J"] = files_->peak_kinetic_energy;
+  r.metrics["peak_kinetic_energy_time_s"] = files_->peak_kinetic_energy_time;
+  r.metrics["front_advance_m"] = front - files_->initial_front_x;
+  r.metrics["top_change_m"] = height - files_->initial_top;
+  if (const auto* m = files_->membrane_outputs()) {
+    double final_max = 0.0;
+    for (const auto& mb : s.membranes) final_max = std::max(final_max, mb.max_tension());
+    r.metrics["membrane_peak_tension_N_m"] = m->peak_tension;
+    r.metrics["membrane_peak_tension_time_s"] = m->peak_tension_time;
+    r.metrics["membrane_final_max_tension_N_m"] = final_max;
+  }
+  return r;
+}
+
+template class MpmSimulation<2>;
+template class MpmSimulation<3>;
+
+namespace {
+
+template <int D>
+std::unique_ptr<Simulation> create_mpm(mpm::MpmScenario sc, const RunContext& ctx) {
+  auto solver = mpm::build_mpm<D>(sc);
+  if (ctx.resume) mpm::load_checkpoint(solver, mpm::MpmOutputs<D>::checkpoint_path(ctx.out));
+  return std::make_unique<MpmSimulation<D>>(std::move(sc), std::move(solver), ctx.out, ctx.resume,
+                                            ctx.threads);
+}
+
+template <int D>
+std::string validate_mpm(const mpm::MpmScenario& sc) {
+  const auto s = mpm::build_mpm<D>(sc);
+  return fmt::format("{}D MPM, {} points, {} material{}, first time step {:.3g} s", D,
+                     s.particles.size(), sc.materials.size(), sc.materials.size() == 1 ? "" : "s",
+                     s.time_step());
+}
+
+}  // namespace
+
+Method mpm_method() {
+  Method m;
+  m.name = "mpm";
+  m.accepts = [](const io::ScenarioFile& f) { return f.method == "mpm"; };
+  m.validate = [](const io::ScenarioFile& f) {
+    const auto sc = io::parse_mpm_scenario(f);
+    return sc.dimension == 2 ? validate_mpm<2>(sc) : validate_mpm<3>(sc);
+  };
+  m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
+    auto sc = io::parse_mpm_scenario(f);
+    if (!ctx.resume) {
+      ctx.prepare();
+      const auto path = ctx.out / "scenario.toml";
+      std::ofstream(path) << io::mpm_scenario_to_toml(sc);
+      // The run uses the resolved file it wrote, as a resume does: an angle
+      // through degrees and back may differ in the last bit, and a resumed run
+      // must start from the very same numbers to end in the same state.
+      sc = io::parse_mpm_scenario(io::load_scenario_file(path.string(), {}));
+    }
+    return sc.dimension == 2 ? create_mpm<2>(std::move(sc), ctx)
+                             : create_mpm<3>(std::move(sc), ctx);
+  };
+  return m;
+}
+
+}  // namespace talus::run

@@ -1,0 +1,91 @@
+#pragma once
+// The depth-averaged methods on the run loop: DAN (1D, run/methods/dan.cpp)
+// and fv2d (2D on a terrain grid, run/methods/fv2d.cpp). Both may end early
+// once the mass is at rest. Without an output folder they write nothing
+// (calibration, comparisons, tests).
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "talus/run/simulation.hpp"
+#include "talus/runout/builder.hpp"
+#include "talus/runout/grid/fv2d_maxima.hpp"
+#include "talus/runout/grid/fv2d_output.hpp"
+#include "talus/runout/output_observer.hpp"
+#include "talus/runout/results.hpp"
+#include "talus/runout/scenario.hpp"
+
+namespace talus::run {
+
+class DanSimulation : public Simulation {
+ public:
+  explicit DanSimulation(runout::RunoutScenario scenario);
+  // Writes the run's files into `out` (without: none).
+  void write_to(const std::filesystem::path& out);
+
+  double time() const override { return setup_.model.blocks().time; }
+  std::int64_t steps() const override { return steps_; }
+  double end_time() const override { return scenario_.control.duration; }
+  double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-4; }
+  Schedules schedules() const override;
+  void start(bool fresh) override;
+  void advance(double target, double tolerance, std::int64_t max_steps) override;
+  bool stopped() const override { return stopped_; }
+  Observer& outputs() override { return *outputs_; }
+  void finish() override;
+  MethodReport report() const override;
+
+  const runout::RunoutResults& results() const { return tracker_.results(); }
+  const runout::DanModel& model() const { return setup_.model; }
+
+ private:
+  runout::RunoutScenario scenario_;
+  runout::DanSetup setup_;
+  runout::RunoutTracker tracker_;
+  std::unique_ptr<runout::DanOutputs> files_;
+  std::unique_ptr<Observer> outputs_;
+  std::int64_t steps_ = 0;
+  double last_dt_ = 0.0;
+  bool stopped_ = false;
+};
+
+class Fv2dSimulation : public Simulation {
+ public:
+  explicit Fv2dSimulation(runout::RunoutScenario scenario, int threads = 1);
+  // Writes the run's files into `out` (without: none).
+  void write_to(const std::filesystem::path& out);
+
+  double time() const override { return solver_.state().time; }
+  std::int64_t steps() const override { return steps_; }
+  double end_time() const override { return scenario_.control.duration; }
+  double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-2; }
+  Schedules schedules() const override;
+  void start(bool fresh) override;
+  // Steps land on `target`, so the series is sampled at its times exactly.
+  void advance(double target, double tolerance, std::int64_t max_steps) override;
+  bool stopped() const override { return stopped_; }
+  Observer& outputs() override { return *outputs_; }
+  void finish() override;
+  MethodReport report() const override;
+
+  const runout::Fv2dSolver& solver() const { return solver_; }
+  const runout::Fv2dMaxima& maxima() const { return maxima_; }
+
+ private:
+  runout::RunoutScenario scenario_;
+  runout::Fv2dSolver solver_;
+  runout::Fv2dMaxima maxima_;
+  std::unique_ptr<runout::Fv2dOutputs> files_;
+  std::unique_ptr<Observer> outputs_;
+  int threads_;
+  double initial_volume_ = 0.0;
+  std::int64_t steps_ = 0;
+  double last_dt_ = 0.0;
+  bool stopped_ = false;
+};
+
+// Runs a DAN scenario to its end without writing anything (for `talus
+// compare`, calibration and tests): the results of the finished run.
+runout::RunoutResults simulate_dan(const runout::RunoutScenario& scenario);
+
+}  // namespace talus::run

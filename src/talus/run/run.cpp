@@ -1,0 +1,117 @@
+#include "talus/run/run.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "talus/core/error.hpp"
+#include "talus/io/compare_file.hpp"
+#include "talus/io/scenario.hpp"
+#include "talus/run/experiment.hpp"
+#include "talus/run/method.hpp"
+#include "talus/run/summary.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::run {
+
+void prepare_output(const fs::path& out, bool force) {
+  if (fs::exists(out) && !fs::is_directory(out))
+    throw InputError(out.string() + ": output path exists and is not a folder");
+  if (fs::exists(out) && !fs::is_empty(out)) {
+    if (!force)
+      throw InputError(out.string() +
+                       ": output folder exists and is not empty; use --force to overwrite it or "
+                       "--out to choose another");
+    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
+  }
+  fs::create_directories(out);
+}
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+io::ScenarioFile load(const RunRequest& req, fs::path& out) {
+  if (!req.resume.empty()) {
+    out = req.resume;
+    if (!fs::exists(out / "checkpoint.bin"))
+      throw InputError(out.string() +
+                       ": no checkpoint.bin to resume from (set "
+                       "output.checkpoint_interval to write checkpoints)");
+    return io::load_scenario_file((out / "scenario.toml").string(), {});
+  }
+  if (req.file.empty()) throw InputError("talus run: a scenario file is required");
+  auto file = io::load_scenario_file(req.file, req.sets);
+  const std::string name = file.table["name"].value_or(std::string());
+  out = !req.out.empty() ? req.out : fs::path("runs") / (name.empty() ? "run" : name);
+  return file;
+}
+
+}  // namespace
+
+RunResult execute(const RunRequest& req) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool resume = !req.resume.empty();
+  fs::path out;
+  const auto file = load(req, out);
+  if (file.method == "compare")
+    throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
+                     "`");
+  const Method& method = method_for(file);
+  if (resume && !method.checkpoints)
+    throw InputError(out.string() + ": " + method.name + " runs write no checkpoints to resume");
+  RunContext ctx{out, req.threads, resume};
+  if (!resume) ctx.prepare = [&] { prepare_output(out, req.force); };
+  auto sim = method.create(file, ctx);
+  auto experiments = attach_experiments(*sim, ctx);
+  std::vector<Observer*> observers;
+  for (auto& e : experiments) observers.push_back(e.get());
+  RunLoop loop(*sim, observers);
+  loop.progress = req.progress;
+  SummaryInput summary;
+  summary.setup_seconds = seconds_since(t0);
+  const std::int64_t first_step = sim->steps();
+  RunResult result;
+  result.out = out;
+  auto fill = [&](const char* status, const std::string& error) {
+    summary.status = status;
+    summary.error = error;
+    summary.report = sim->report();
+    summary.steps = sim->steps() - first_step;
+    summary.simulated_time = sim->time();
+    summary.loop_seconds = loop.stats().wall_seconds;
+  };
+  try {
+    loop.start(!resume);
+    loop.run();
+    for (auto& e : experiments) summary.experiments[e->name()] = e->finish();
+    fill("completed", "");
+    write_summary(out, summary);
+  } catch (const RunError& e) {
+    fill("failed", e.what());
+    write_summary(out, summary);
+    throw;
+  }
+  result.stats = loop.stats();
+  for (auto& e : experiments) {
+    const auto line = e->headline(summary.experiments[e->name()]);
+    if (!line.empty()) result.headline.push_back(line);
+  }
+  return result;
+}
+
+std::string validate(const std::string& path, const std::vector<std::string>& sets) {
+  const auto file = io::load_scenario_file(path, sets);
+  if (file.method == "compare") {
+    const auto c = io::read_compare_file(path);
+    for (const auto& [name, method_file] : c.methods) validate(method_file, {});
+    return fmt::format("valid comparison of {} methods", c.methods.size());
+  }
+  return "valid (" + method_for(file).validate(file) + ")";
+}
+
+}  // namespace talus::run

@@ -1,0 +1,41 @@
+#pragma once
+// `talus run` and `talus validate` without the command line: from a scenario
+// file (or a run folder to resume) to a finished run folder with its
+// summary.json. The command line (app/) only parses options and prints.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "talus/run/loop.hpp"
+
+namespace talus::run {
+
+struct RunRequest {
+  std::string file;               // the scenario; empty when resuming
+  std::filesystem::path out;      // empty: runs/<name>
+  std::filesystem::path resume;   // a run folder to continue from its checkpoint
+  std::vector<std::string> sets;  // "key=value" overrides
+  int threads = 1;
+  bool force = false;  // empty an existing output folder
+  std::function<void(const Progress&)> progress;
+};
+
+struct RunResult {
+  std::filesystem::path out;
+  RunStats stats;
+  std::vector<std::string> headline;  // key results, one line each
+};
+
+// Runs a scenario to its end. InputError before anything runs; RunError when
+// the run fails (summary.json then says "failed" and why).
+RunResult execute(const RunRequest& request);
+
+// Parses and builds a scenario without running: the one-line description.
+std::string validate(const std::string& file, const std::vector<std::string>& sets);
+
+// Creates the output folder; refuses one that holds files unless forced (then
+// empties it). Throws InputError.
+void prepare_output(const std::filesystem::path& out, bool force);
+
+}  // namespace talus::run

@@ -1,0 +1,38 @@
+#include "talus/run/summary.hpp"
+
+#include <fstream>
+
+#include "talus/core/version.hpp"
+
+namespace talus::run {
+
+nlohmann::json summary_json(const SummaryInput& in) {
+  const auto& r = in.report;
+  nlohmann::json j = {{"talus_version", talus::version()},
+                      {"status", in.status},
+                      {"method", r.method},
+                      {"dimension", r.dimension},
+                      {"scenario", r.scenario}};
+  if (!r.model.empty()) j["model"] = r.model;
+  j["resolved"] = r.resolved;
+  // Steps, times and the throughput: items (particles, blocks, points, cells)
+  // advanced per second of the time loop.
+  j["run"] = {{"steps", in.steps},
+              {"simulated_time_s", in.simulated_time},
+              {"loop_wall_s", in.loop_seconds},
+              {"setup_wall_s", in.setup_seconds},
+              {r.rate_key, in.loop_seconds > 0 ? r.items * in.steps / in.loop_seconds : 0.0}};
+  for (const auto& [k, v] : r.run_extra.items()) j["run"][k] = v;
+  j["metrics"] = r.metrics;
+  for (const auto& [name, part] : in.experiments.items()) j[name] = part;
+  if (!in.error.empty()) j["error"] = in.error;
+  return j;
+}
+
+void write_summary(const std::filesystem::path& out, const SummaryInput& in) {
+  const auto tmp = out / "summary.json.tmp";
+  std::ofstream(tmp) << summary_json(in).dump(2) << "\n";
+  std::filesystem::rename(tmp, out / "summary.json");
+}
+
+}  // namespace talus::run

@@ -1,0 +1,27 @@
+#pragma once
+// summary.json, one writer for every method: what ran (the resolved
+// scenario), what the method resolved, the loop's counts and timings, the
+// method's headline metrics and each experiment's part under its name.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "talus/run/loop.hpp"
+#include "talus/run/simulation.hpp"
+
+namespace talus::run {
+
+struct SummaryInput {
+  std::string status;  // "completed" or "failed"
+  std::string error;   // why it failed
+  MethodReport report;
+  std::int64_t steps = 0;
+  double simulated_time = 0.0, loop_seconds = 0.0, setup_seconds = 0.0;
+  nlohmann::json experiments = nlohmann::json::object();  // name -> part
+};
+
+nlohmann::json summary_json(const SummaryInput& in);
+// Written next to the final name and renamed, so a reader never sees half a file.
+void write_summary(const std::filesystem::path& out, const SummaryInput& in);
+
+}  // namespace talus::run
