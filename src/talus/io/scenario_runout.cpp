@@ -175,10 +175,7 @@ void read_release(TomlReader& r, const runout::PathSpec& path, runout::ReleaseSp
     if (path.kind != PathKind::Flume)
       r.fail("type", "a release of type 'flume' needs a path of type 'flume'");
   } else {
-    for (const Vec3& v : r.vec3_list("polygon")) {
-      r.expect(v.z() == 0.0, "polygon", "points [x, y] in the path's vertical plane");
-      rel.polygon.emplace_back(v.x(), v.y());
-    }
+    for (const Vec3& v : r.vec3_list("polygon", 2)) rel.polygon.emplace_back(v.x(), v.y());
     r.expect(rel.polygon.size() >= 3, "polygon", "three or more points [x, y]");
   }
   r.finish();
@@ -313,9 +310,14 @@ void read_profile_csv(const std::string& path, std::vector<Eigen::Vector2d>& poi
 }
 
 runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
+  {
+    // Unknown tables first; a second reader, so that the tables of the other
+    // model (marked read here) are still refused by root.reject below.
+    TomlReader top(file.table, file.path);
+    for (std::string_view key : kTopLevelKeys) top.mark_read(key);
+    top.finish();
+  }
   TomlReader root(file.table, file.path);
-  for (std::string_view key : kTopLevelKeys) root.mark_read(key);
-  root.finish();
   runout::RunoutScenario s;
   const std::string method = root.required_string("method");
   if (method != "runout") root.expect(false, "method", "\"runout\"");
