@@ -1,10 +1,12 @@
 // Input that used to be silently accepted (issue 28, section 4): tables the
-// chosen runout model does not read, and fixed-length arrays with a number
-// too many or too few.
+// chosen runout model does not read, fixed-length arrays with a number too
+// many, and a time step above the critical one, which must name the file, the
+// line and the keys behind it.
 #include <gtest/gtest.h>
 
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
+#include "talus/dem/builder.hpp"
 #include "talus/io/scenario.hpp"
 #include "talus/io/scenario_runout.hpp"
 
@@ -75,6 +77,42 @@ TEST(Refusals, FixedLengthArraysWithANumberTooMany) {
                          "sheet.toml"));
   EXPECT_DOUBLE_EQ(s.membranes[0].pressure_ramp_end, 0.02);
   EXPECT_DOUBLE_EQ(s.membranes[0].size_y, 0.1);
+}
+
+const char* kTinyDem = R"(method = "dem"
+[run]
+dimension = 2
+duration = 0.1
+time_step = 1e-4
+[contact]
+model = "linear"
+[[materials]]
+name = "sand"
+density = 2672
+friction = 0.3
+normal_stiffness = 1e6
+[[particles]]
+type = "list"
+material = "sand"
+[[particles.list]]
+position = [0.5, 0.5]
+radius = 0.01
+)";
+
+TEST(Refusals, TimeStepAboveCriticalNamesFileLineAndKeys) {
+  const std::string path = cases::write_temp("tiny_dem", kTinyDem);
+  // As written the step is fine; a much lighter grain makes it too long.
+  const auto fine = parse_dem_scenario(load_scenario_file(path, {}));
+  EXPECT_NO_THROW(dem::build_dem<2>(fine, {1, false}));
+  const auto light = parse_dem_scenario(load_scenario_file(path, {"materials.0.density=2"}));
+  std::string message = error_of([&] { dem::build_dem<2>(light, {1, false}); });
+  EXPECT_EQ(message.rfind(path + ":5: [run] 'time_step': 0.0001 s is above the critical", 0), 0u)
+      << message;
+  EXPECT_TRUE(contains(message, "[[materials]] 'sand': materials.0.density = 2 kg/m^3")) << message;
+  // A step given with --set is said to be.
+  const auto set = parse_dem_scenario(load_scenario_file(path, {"run.time_step=1e-2"}));
+  message = error_of([&] { dem::build_dem<2>(set, {1, false}); });
+  EXPECT_EQ(message.rfind(path + ": --set run.time_step: 0.01 s is above", 0), 0u) << message;
 }
 
 }  // namespace

@@ -41,6 +41,7 @@ dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
     const bool number = !r.has("time_step") || r.is_number("time_step");
     r.expect(number, "time_step", "a positive number (s) or \"auto\"");
     run.time_step = r.number("time_step", 0.0);
+    if (r.has("time_step")) run.time_step_source = r.where("time_step");
     r.expect(run.time_step >= 0.0 && (run.time_step > 0.0 || !r.has("time_step")), "time_step",
              "a positive number (s) or \"auto\"");
   }
