@@ -213,11 +213,25 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   s.reference_speed = std::max({1.0, 2.0 * v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
   s.critical_time_step = run->stepper->critical_time_step(s.reference_speed);
   if (sc.run.time_step > 0.0) {
-    if (sc.run.time_step > s.critical_time_step)
+    if (sc.run.time_step > s.critical_time_step) {
+      // Name the keys behind the critical step: the lightest particle's material.
+      const auto& p = s.particles;
+      std::string lightest;
+      if (p.size() > 0) {
+        const auto k = std::min_element(p.m.begin(), p.m.end()) - p.m.begin();
+        const auto& m = sc.materials[p.material[k]];
+        lightest = fmt::format(
+            " (radius {:.4g} m, of [[materials]] '{}': materials.{}.density = "
+            "{:.4g} kg/m^3 and its stiffness)",
+            p.r[k], m.name, p.material[k], m.density);
+      }
       throw InputError(fmt::format(
-          "[run] 'time_step': {:.4g} s is above the critical time step {:.4g} s of the stiffest "
-          "contact and lightest particle; use at most {:.4g} s (or leave it out: automatic)",
-          sc.run.time_step, s.critical_time_step, sc.run.safety_factor * s.critical_time_step));
+          "{}: {:.4g} s is above the critical time step {:.4g} s of the stiffest contact and "
+          "lightest particle{}; use at most {:.4g} s (or leave time_step out: automatic)",
+          sc.run.time_step_source.empty() ? "[run] 'time_step'" : sc.run.time_step_source,
+          sc.run.time_step, s.critical_time_step, lightest,
+          sc.run.safety_factor * s.critical_time_step));
+    }
     s.dt = sc.run.time_step;
   } else {
     s.dt = sc.run.safety_factor * s.critical_time_step;

@@ -163,6 +163,8 @@ struct RunParams {
   // Stop when the kinetic energy exceeds this factor times the energy available
   // at the start (kinetic plus potential above the floor); 0 disables the check.
   double ke_blowup_factor = 10.0;
+  // Where time_step was set ("file:line: [run] 'time_step'"), for messages.
+  std::string time_step_source;
 };
 
 // The Mancarella & Hungr flume (spec: flume.md) built from the barrier angle

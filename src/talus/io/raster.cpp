@@ -4,9 +4,12 @@
 #include <cpl_error.h>
 #include <fmt/format.h>
 #include <gdal.h>
+#include <ogr_srs_api.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <memory>
 #include <mutex>
 
 #include "talus/core/error.hpp"
@@ -27,19 +30,68 @@ std::string last_gdal_error() {
   return msg && *msg ? msg : "unknown GDAL error";
 }
 
+// A parsed CRS, null when the WKT is empty or not understood.
+using Srs = std::unique_ptr<void, void (*)(OGRSpatialReferenceH)>;
+Srs parse_srs(const std::string& wkt) {
+  Srs srs(nullptr, OSRDestroySpatialReference);
+  if (wkt.empty()) return srs;
+  srs.reset(OSRNewSpatialReference(nullptr));
+  char* text = const_cast<char*>(wkt.c_str());
+  if (OSRImportFromWkt(srs.get(), &text) != OGRERR_NONE) srs.reset();
+  return srs;
+}
+
+std::string srs_name(const Srs& srs) {
+  const char* name = OSRGetName(srs.get());
+  return name && *name ? name : "unnamed";
+}
+
 }  // namespace
+
+std::string crs_not_metric(const std::string& wkt) {
+  register_gdal();
+  const Srs srs = parse_srs(wkt);
+  if (!srs) return "";
+  if (OSRIsGeographic(srs.get()))
+    return fmt::format(
+        "its CRS '{}' is geographic (cells in degrees); expected a projected CRS "
+        "in metres (reproject it, e.g. gdalwarp -t_srs EPSG:<UTM zone>)",
+        srs_name(srs));
+  char* unit = nullptr;
+  const double metres = OSRGetLinearUnits(srs.get(), &unit);
+  if (std::abs(metres - 1.0) > 1e-9)
+    return fmt::format("its CRS '{}' measures in {} ({} m); expected a projected CRS in metres",
+                       srs_name(srs), unit ? unit : "unknown units", metres);
+  return "";
+}
+
+std::string crs_mismatch(const std::string& a, const std::string& b) {
+  register_gdal();
+  const Srs sa = parse_srs(a), sb = parse_srs(b);
+  if (!sa || !sb || OSRIsSame(sa.get(), sb.get())) return "";
+  return fmt::format("its CRS '{}' is not the terrain's '{}'", srs_name(sa), srs_name(sb));
+}
 
 Raster read_raster(const std::string& path) {
   register_gdal();
   CPLErrorReset();
   GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
-  if (!ds)
+  if (!ds) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+      throw InputError(fmt::format("{}: is a folder, not a raster file", path));
     throw InputError(fmt::format("{}: cannot read the raster ({})", path, last_gdal_error()));
+  }
   struct Closer {
     GDALDatasetH ds;
     ~Closer() { GDALClose(ds); }
   } closer{ds};
-  if (GDALGetRasterCount(ds) < 1) throw InputError(fmt::format("{}: the raster has no band", path));
+  const int bands = GDALGetRasterCount(ds);
+  if (bands < 1) throw InputError(fmt::format("{}: the raster has no band", path));
+  if (bands > 1)
+    throw InputError(fmt::format(
+        "{}: the raster has {} bands; expected one (extract it, e.g. gdal_translate -b 1)", path,
+        bands));
   double gt[6];
   if (GDALGetGeoTransform(ds, gt) != CE_None) {
     // No georeference: unit cells with the corner at the origin.
@@ -49,12 +101,19 @@ Raster read_raster(const std::string& path) {
     throw InputError(fmt::format("{}: rotated or sheared rasters are not supported", path));
   if (!(gt[1] > 0.0) || gt[5] == 0.0)
     throw InputError(fmt::format("{}: the cell size must be positive", path));
+  // Positive: rows run north from the first. Flipping would mirror a raster
+  // whose geotransform has the wrong sign, so such files are refused.
+  if (gt[5] > 0.0)
+    throw InputError(fmt::format(
+        "{}: a south-up raster (pixel height {} > 0); expected north-up rows (negative pixel "
+        "height; e.g. gdalwarp rewrites it north-up)",
+        path, gt[5]));
   Raster r;
   r.nx = static_cast<std::size_t>(GDALGetRasterXSize(ds));
   r.ny = static_cast<std::size_t>(GDALGetRasterYSize(ds));
   r.dx = gt[1], r.dy = std::abs(gt[5]);
   r.x_west = gt[0];
-  r.y_north = gt[5] < 0 ? gt[3] : gt[3] + gt[5] * static_cast<double>(r.ny);
+  r.y_north = gt[3];
   if (const char* wkt = GDALGetProjectionRef(ds)) r.projection = wkt;
   GDALRasterBandH band = GDALGetRasterBand(ds, 1);
   int has_nodata = 0;
@@ -66,10 +125,6 @@ Raster read_raster(const std::string& path) {
                    0) != CE_None)
     throw InputError(
         fmt::format("{}: cannot read the raster's values ({})", path, last_gdal_error()));
-  if (gt[5] > 0) {  // south-up: flip so that row 0 is the northern one
-    for (std::size_t j = 0; j < r.ny / 2; ++j)
-      for (std::size_t i = 0; i < r.nx; ++i) std::swap(r.at(i, j), r.at(i, r.ny - 1 - j));
-  }
   return r;
 }
 

@@ -3,6 +3,7 @@
 // plain grid: values row by row from the north-west corner, the corner's map
 // coordinates, the cell size and the no-data value. Reading and writing go
 // through GDAL; nothing here knows what the values mean.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,13 +20,23 @@ struct Raster {
 
   double& at(std::size_t i, std::size_t j) { return values[j * nx + i]; }
   double at(std::size_t i, std::size_t j) const { return values[j * nx + i]; }
-  bool is_nodata(double v) const { return nodata && v == *nodata; }
+  // A NaN no-data value marks the NaN cells.
+  bool is_nodata(double v) const {
+    return nodata && (v == *nodata || (std::isnan(v) && std::isnan(*nodata)));
+  }
 };
 
-// The first band of a raster file. Throws InputError naming the file when GDAL
-// cannot open it, the raster is rotated or sheared, or it has no band. A
-// south-up raster is flipped so that row 0 is the northern one.
+// The one band of a raster file. Throws InputError naming the file when GDAL
+// cannot open it (a folder is said to be one), the raster is rotated, sheared
+// or south-up (positive pixel height), or it has no band or more than one.
 Raster read_raster(const std::string& path);
+
+// Why a CRS (WKT) is not projected in metres: "its CRS 'WGS 84' is geographic
+// ..."; "" when it is, or when the WKT is empty (unknown CRS).
+std::string crs_not_metric(const std::string& wkt);
+// "its CRS 'A' is not the terrain's 'B'" when both CRSs are known and differ,
+// else "".
+std::string crs_mismatch(const std::string& wkt, const std::string& terrain_wkt);
 
 // GeoTIFF, one Float64 band (with the no-data value and projection if set).
 // Throws RunError when the file cannot be written.

@@ -8,7 +8,7 @@
 #include <climits>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <system_error>
 
 #include "talus/core/error.hpp"
 #include "talus/io/scenario_detail.hpp"
@@ -41,6 +41,7 @@ dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
     const bool number = !r.has("time_step") || r.is_number("time_step");
     r.expect(number, "time_step", "a positive number (s) or \"auto\"");
     run.time_step = r.number("time_step", 0.0);
+    if (r.has("time_step")) run.time_step_source = r.where("time_step");
     r.expect(run.time_step >= 0.0 && (run.time_step > 0.0 || !r.has("time_step")), "time_step",
              "a positive number (s) or \"auto\"");
   }
@@ -121,23 +122,52 @@ toml::table parse_toml(std::string_view text, const std::string& path) {
   }
 }
 
+// Scenario files are small; a device, a pipe or a huge file would be read
+// until memory runs out (/dev/zero) or for ever.
+constexpr std::uintmax_t kMaxScenarioBytes = 16u << 20;
+
+// Why path cannot be read as a scenario file ("is a folder"), or "".
+std::string scenario_file_problem(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return "does not exist";
+  if (ec) return fmt::format("cannot be read ({})", ec.message());
+  if (status.type() == fs::file_type::directory) return "is a folder, not a scenario file";
+  if (status.type() != fs::file_type::regular)
+    return "is not a regular file (a device, a pipe or a socket), not a scenario file";
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > kMaxScenarioBytes)
+    return fmt::format("has {} bytes; a scenario file may have at most 16 MiB", size);
+  return "";
+}
+
 std::string read_text(const std::string& path) {
+  if (const std::string problem = scenario_file_problem(path); !problem.empty())
+    throw InputError(fmt::format("{}: {}", path, problem));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open the scenario file", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // The limit holds while reading too, should the file have grown since.
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxScenarioBytes)
+      throw InputError(fmt::format("{}: more than the 16 MiB a scenario file may have", path));
+  }
+  return text;
 }
 
 // Tables merge key by key; any other value, arrays of tables included,
-// replaces the base's.
-void merge_over(toml::table& base, const toml::table& top) {
-  for (const auto& [key, node] : top) {
+// replaces the base's. Values are moved, not copied: a copy would lose its
+// source position, and an error in it would then blame --set.
+void merge_over(toml::table& base, toml::table&& top) {
+  for (auto&& [key, node] : top) {
     toml::node* below = base.get(key);
     if (below && below->is_table() && node.is_table()) {
-      merge_over(*below->as_table(), *node.as_table());
+      merge_over(*below->as_table(), std::move(*node.as_table()));
     } else {
-      base.insert_or_assign(key, node);
+      node.visit([&](auto&& value) { base.insert_or_assign(key, std::move(value)); });
     }
   }
 }
@@ -154,15 +184,19 @@ void resolve_extends(toml::table& table, const std::string& path, int depth) {
   if (depth >= 8)
     throw InputError(fmt::format(
         "{}:{}: 'extends': more than 8 levels of base scenarios (a cycle?)", path, line));
-  std::filesystem::path base_path = *extends->value<std::string>();
+  const std::string given = *extends->value<std::string>();
+  if (given.empty())
+    throw InputError(fmt::format(
+        "{}:{}: 'extends': expected the path of a base scenario file, got \"\"", path, line));
+  std::filesystem::path base_path = given;
   if (base_path.is_relative()) base_path = std::filesystem::path(path).parent_path() / base_path;
-  if (!std::filesystem::exists(base_path))
-    throw InputError(fmt::format("{}:{}: 'extends': base scenario {} does not exist", path, line,
-                                 base_path.string()));
+  if (const std::string problem = scenario_file_problem(base_path); !problem.empty())
+    throw InputError(fmt::format("{}:{}: 'extends': base scenario {} {}", path, line,
+                                 base_path.string(), problem));
   toml::table base = parse_toml(read_text(base_path.string()), base_path.string());
   resolve_extends(base, base_path.string(), depth + 1);
   table.erase("extends");
-  merge_over(base, table);
+  merge_over(base, std::move(table));
   table = std::move(base);
 }
 

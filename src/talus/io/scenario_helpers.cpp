@@ -101,9 +101,17 @@ std::string required_file(TomlReader& r, std::string_view key, const DemContext&
   const std::filesystem::path path =
       std::filesystem::absolute(given.is_absolute() ? given : ctx.folder / given)
           .lexically_normal();
-  if (!std::filesystem::is_regular_file(path)) {
-    r.fail(key, fmt::format("no such file: {}", path.string()));
-  }
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_type type = fs::status(path, ec).type();
+  if (type == fs::file_type::not_found) r.fail(key, fmt::format("no such file: {}", path.string()));
+  if (type == fs::file_type::none)
+    r.fail(key, fmt::format("cannot read {} ({})", path.string(), ec.message()));
+  if (type == fs::file_type::directory)
+    r.fail(key, fmt::format("{} is a folder; expected a file", path.string()));
+  if (type != fs::file_type::regular)
+    r.fail(key,
+           fmt::format("{} is not a regular file (a device, a pipe or a socket)", path.string()));
   return path.string();
 }
 

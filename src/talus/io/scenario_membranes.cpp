@@ -23,13 +23,12 @@ void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
   switch (m.mesh) {
     case MembraneMeshKind::FlatSheet: {
       m.origin = required_point(r, "origin", ctx);
-      if (!r.has("size")) r.missing("size", "missing (expected [lx, ly] in m)");
-      const Vec3 size = r.required_vec3("size");
+      const auto size = r.required_numbers("size", 2, "[lx, ly] in m");
       m.spacing = required_number_in(r, "spacing", positive());
-      r.expect(size.x() >= m.spacing && size.y() >= m.spacing && size.z() == 0.0, "size",
+      r.expect(size[0] >= m.spacing && size[1] >= m.spacing, "size",
                fmt::format("[lx, ly] with both sides at least the spacing ({} m)", m.spacing));
-      m.size_x = size.x();
-      m.size_y = size.y();
+      m.size_x = size[0];
+      m.size_y = size[1];
       break;
     }
     case MembraneMeshKind::Cylinder:
@@ -61,8 +60,8 @@ void read_mesh(TomlReader& r, dem::MembraneSpec& m, const DemContext& ctx) {
     }
     case MembraneMeshKind::Box: {
       m.origin = point_or(r, "center", ctx, Vec3::Zero());
-      if (!r.has("size")) r.missing("size", "missing (expected [lx, ly, lz] in m)");
-      const Vec3 size = r.required_vec3("size");
+      const auto numbers = r.required_numbers("size", 3, "[lx, ly, lz] in m");
+      const Vec3 size(numbers[0], numbers[1], numbers[2]);
       r.expect(size.minCoeff() > 0, "size", "[lx, ly, lz] with every side > 0");
       m.size_x = size.x();
       m.size_y = size.y();
@@ -115,12 +114,12 @@ void check_fixed(TomlReader& r, const dem::MembraneSpec& m) {
 // to `pressure` at end (Götz applies the vacuum stepwise after relaxing).
 void read_pressure_ramp(TomlReader& r, dem::MembraneSpec& m) {
   if (!r.has("pressure_ramp")) return;
-  const Vec3 ramp = r.required_vec3("pressure_ramp");
-  r.expect(ramp.z() == 0.0 && ramp.x() >= 0.0 && ramp.y() > ramp.x(), "pressure_ramp",
+  const auto ramp = r.required_numbers("pressure_ramp", 2, "[start, end] in s");
+  r.expect(ramp[0] >= 0.0 && ramp[1] > ramp[0], "pressure_ramp",
            "[start, end] in s with 0 <= start < end");
   r.expect(m.pressure != 0.0, "pressure_ramp", "a non-zero 'pressure' to ramp to");
-  m.pressure_ramp_start = ramp.x();
-  m.pressure_ramp_end = ramp.y();
+  m.pressure_ramp_start = ramp[0];
+  m.pressure_ramp_end = ramp[1];
 }
 
 // bottom_ring_wall / top_ring_wall: the pinned ring follows that wall.

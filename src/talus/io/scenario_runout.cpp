@@ -175,17 +175,43 @@ void read_release(TomlReader& r, const runout::PathSpec& path, runout::ReleaseSp
     if (path.kind != PathKind::Flume)
       r.fail("type", "a release of type 'flume' needs a path of type 'flume'");
   } else {
-    for (const Vec3& v : r.vec3_list("polygon")) {
-      r.expect(v.z() == 0.0, "polygon", "points [x, y] in the path's vertical plane");
-      rel.polygon.emplace_back(v.x(), v.y());
-    }
+    for (const Vec3& v : r.vec3_list("polygon", 2)) rel.polygon.emplace_back(v.x(), v.y());
     r.expect(rel.polygon.size() >= 3, "polygon", "three or more points [x, y]");
   }
   r.finish();
 }
 
-// A raster on the terrain's grid (or the terrain itself when `terrain` is
-// null); no-data cells become 0, except in the terrain where they are errors.
+// The terrain fixes the grid and the CRS: square cells in metres.
+void take_terrain_grid(TomlReader& r, std::string_view key, const std::string& file,
+                       const Raster& raster, runout::GridSpec& g) {
+  if (const std::string why = crs_not_metric(raster.projection); !why.empty())
+    r.fail(key, fmt::format("{}: {}", file, why));
+  if (std::abs(raster.dx - raster.dy) > 1e-9 * raster.dx)
+    r.fail(key, fmt::format("{}: cells of {} x {} m; expected square cells (resample it, e.g. "
+                            "gdalwarp -tr {} {})",
+                            file, raster.dx, raster.dy, raster.dx, raster.dx));
+  g.shape = {raster.nx, raster.ny, raster.dx, raster.dy};
+  g.x_west = raster.x_west, g.y_north = raster.y_north, g.projection = raster.projection;
+}
+
+// Another raster must lie on the terrain's grid, in its CRS.
+void check_on_terrain_grid(TomlReader& r, std::string_view key, const std::string& file,
+                           const Raster& raster, const runout::GridSpec& g) {
+  if (const std::string why = crs_mismatch(raster.projection, g.projection); !why.empty())
+    r.fail(key, fmt::format("{}: {}", file, why));
+  Raster ref;
+  ref.nx = g.shape.nx, ref.ny = g.shape.ny, ref.dx = g.shape.dx, ref.dy = g.shape.dy;
+  ref.x_west = g.x_west, ref.y_north = g.y_north;
+  if (!same_grid(raster, ref))
+    r.fail(key,
+           fmt::format("{}: the grid ({} x {} cells of {} x {} m) is not the terrain's "
+                       "({} x {} cells of {} m, same corner)",
+                       file, raster.nx, raster.ny, raster.dx, raster.dy, ref.nx, ref.ny, ref.dx));
+}
+
+// A raster on the terrain's grid (or the terrain itself when `terrain`);
+// no-data cells become 0, except in the terrain where they are errors. A NaN
+// is a no-data cell only when the raster says so (no-data value NaN).
 std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail::DemContext& ctx,
                               std::string& file, runout::GridSpec& g, bool terrain) {
   file = detail::required_file(r, key, ctx);
@@ -195,27 +221,23 @@ std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail:
   } catch (const InputError& e) {
     r.fail(key, e.what());
   }
-  if (terrain) {
-    g.shape = {raster.nx, raster.ny, raster.dx, raster.dy};
-    g.x_west = raster.x_west, g.y_north = raster.y_north, g.projection = raster.projection;
-  } else {
-    Raster ref;
-    ref.nx = g.shape.nx, ref.ny = g.shape.ny, ref.dx = g.shape.dx, ref.dy = g.shape.dy;
-    ref.x_west = g.x_west, ref.y_north = g.y_north;
-    if (!same_grid(raster, ref))
-      r.fail(key, fmt::format("{}: the grid ({} x {} cells of {} m) is not the terrain's "
-                              "({} x {} cells of {} m, same corner)",
-                              file, raster.nx, raster.ny, raster.dx, ref.nx, ref.ny, ref.dx));
-  }
+  if (terrain)
+    take_terrain_grid(r, key, file, raster, g);
+  else
+    check_on_terrain_grid(r, key, file, raster, g);
   for (std::size_t j = 0; j < raster.ny; ++j)
     for (std::size_t i = 0; i < raster.nx; ++i) {
       double& v = raster.at(i, j);
-      if (raster.is_nodata(v) || !std::isfinite(v)) {
-        if (terrain)
-          r.fail(key, fmt::format("{}: cell (column {}, row {}) has no elevation", file, i, j));
+      const std::string cell = fmt::format("{}: cell (column {}, row {})", file, i, j);
+      if (raster.is_nodata(v)) {
+        if (terrain) r.fail(key, cell + " has no elevation (no-data)");
         v = 0.0;
+      } else if (!std::isfinite(v)) {
+        r.fail(key, fmt::format("{} is {}; expected a number (or declare NaN the raster's no-data "
+                                "value)",
+                                cell, v));
       } else if (!terrain && v < 0.0) {
-        r.fail(key, fmt::format("{}: cell (column {}, row {}) is negative ({})", file, i, j, v));
+        r.fail(key, fmt::format("{} is negative ({})", cell, v));
       }
     }
   return std::move(raster.values);
@@ -313,9 +335,14 @@ void read_profile_csv(const std::string& path, std::vector<Eigen::Vector2d>& poi
 }
 
 runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
+  {
+    // Unknown tables first; a second reader, so that the tables of the other
+    // model (marked read here) are still refused by root.reject below.
+    TomlReader top(file.table, file.path);
+    for (std::string_view key : kTopLevelKeys) top.mark_read(key);
+    top.finish();
+  }
   TomlReader root(file.table, file.path);
-  for (std::string_view key : kTopLevelKeys) root.mark_read(key);
-  root.finish();
   runout::RunoutScenario s;
   const std::string method = root.required_string("method");
   if (method != "runout") root.expect(false, "method", "\"runout\"");

@@ -237,18 +237,26 @@ bool TomlReader::boolean(std::string_view key, bool fallback) {
   return optional_bool(key).value_or(fallback);
 }
 
-Vec3 TomlReader::to_vec3(std::string_view key, const toml::node& node,
-                         std::string_view what) const {
+std::vector<double> TomlReader::to_numbers(std::string_view key, const toml::node& node,
+                                           std::string_view what, std::size_t size) const {
   const toml::array* array = node.as_array();
   const auto is_number = [](const toml::node& n) {
     return n.is_integer() || n.is_floating_point();
   };
-  if (!array || array->size() < 2 || array->size() > 3 ||
-      !std::all_of(array->begin(), array->end(), is_number)) {
+  const bool size_ok =
+      array && (size == 0 ? array->size() == 2 || array->size() == 3 : array->size() == size);
+  if (!size_ok || !std::all_of(array->begin(), array->end(), is_number))
     fail(key, fmt::format("expected {}, got {}", what, node_text(node)));
-  }
+  std::vector<double> out;
+  for (const toml::node& element : *array) out.push_back(to_number(key, element));
+  return out;
+}
+
+Vec3 TomlReader::to_vec3(std::string_view key, const toml::node& node, std::string_view what,
+                         std::size_t size) const {
+  const std::vector<double> numbers = to_numbers(key, node, what, size);
   Vec3 v = Vec3::Zero();
-  for (std::size_t i = 0; i < array->size(); ++i) v[i] = to_number(key, (*array)[i]);
+  for (std::size_t i = 0; i < numbers.size(); ++i) v[i] = numbers[i];
   return v;
 }
 
@@ -265,16 +273,23 @@ Vec3 TomlReader::vec3(std::string_view key, const Vec3& fallback) {
   return optional_vec3(key).value_or(fallback);
 }
 
-std::vector<Vec3> TomlReader::vec3_list(std::string_view key) {
+std::vector<Vec3> TomlReader::vec3_list(std::string_view key, std::size_t size) {
   const toml::node* node = get(key);
   if (!node) return {};
   const toml::array* array = node->as_array();
   expect(array != nullptr, key, "a list of points [[x, y], ...]");
+  const std::string_view what = size == 2 ? "a list of points [[x, y], ...]"
+                                          : "a list of points [[x, y], ...] or [[x, y, z], ...]";
   std::vector<Vec3> points;
-  for (const toml::node& element : *array) {
-    points.push_back(to_vec3(key, element, "a list of points [[x, y], ...] or [[x, y, z], ...]"));
-  }
+  for (const toml::node& element : *array) points.push_back(to_vec3(key, element, what, size));
   return points;
+}
+
+std::vector<double> TomlReader::required_numbers(std::string_view key, std::size_t size,
+                                                 std::string_view what) {
+  const toml::node* node = get(key);
+  if (!node) missing(key, fmt::format("missing (expected {})", what));
+  return to_numbers(key, *node, what, size);
 }
 
 std::vector<std::string> TomlReader::string_list(std::string_view key) {

@@ -62,7 +62,12 @@ class TomlReader {
   std::optional<Vec3> optional_vec3(std::string_view key);
   Vec3 vec3(std::string_view key, const Vec3& fallback);
   // An array of such arrays (polygon, triangle vertices); empty when absent.
-  std::vector<Vec3> vec3_list(std::string_view key);
+  // size 2: every point must be [x, y] (a third number is an error).
+  std::vector<Vec3> vec3_list(std::string_view key, std::size_t size = 0);
+  // An array of exactly `size` numbers that is not a point (what: "[start,
+  // end] in s"): a missing or an extra number is an error.
+  std::vector<double> required_numbers(std::string_view key, std::size_t size,
+                                       std::string_view what);
   std::vector<std::string> string_list(std::string_view key);
 
   // Angles are written in degrees and returned in radians.
@@ -110,7 +115,11 @@ class TomlReader {
  private:
   const toml::node* get(std::string_view key);  // marks the key as read
   double to_number(std::string_view key, const toml::node& node) const;
-  Vec3 to_vec3(std::string_view key, const toml::node& node, std::string_view what) const;
+  Vec3 to_vec3(std::string_view key, const toml::node& node, std::string_view what,
+               std::size_t size = 0) const;
+  // Exactly size numbers, or (size 0) 2 or 3.
+  std::vector<double> to_numbers(std::string_view key, const toml::node& node,
+                                 std::string_view what, std::size_t size) const;
   std::optional<std::size_t> choose(std::string_view key,
                                     const std::vector<std::string_view>& names, bool required);
   template <typename E>
