@@ -10,7 +10,7 @@
 
 #include "commands.hpp"
 #include "talus/core/error.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace fs = std::filesystem;
 

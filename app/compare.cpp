@@ -15,12 +15,12 @@
 #include "commands.hpp"
 #include "talus/core/error.hpp"
 #include "talus/geometry/flume.hpp"
-#include "talus/io/compare_file.hpp"
 #include "talus/io/csv_reader.hpp"
 #include "talus/io/csv_writer.hpp"
-#include "talus/io/scenario.hpp"
-#include "talus/io/scenario_mpm.hpp"
-#include "talus/io/scenario_runout.hpp"
+#include "talus/scenario/compare_file.hpp"
+#include "talus/scenario/scenario.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace fs = std::filesystem;
 
@@ -77,7 +77,7 @@ nlohmann::json load_json(const fs::path& p) {
 double number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : NAN; }
 
 // A DEM run's flume block, or an MPM run's (the MPM flume analysis writes the
-// same keys and files, mpm/flume_observer.hpp).
+// same keys and files, analysis/mpm_flume_observer.hpp).
 Result read_dem(const fs::path& dir) {
   const auto f = load_json(dir / "summary.json").at("flume");
   Result r;

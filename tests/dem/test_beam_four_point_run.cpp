@@ -20,7 +20,7 @@
 #include "talus/analysis/beam_four_point.hpp"
 #include "talus/dem/builder.hpp"
 #include "talus/io/csv_reader.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::dem {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "talus/analysis/beam.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::dem {
 namespace {

@@ -16,7 +16,7 @@
 
 #include "talus/analysis/gripper.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::dem {
 namespace {

@@ -13,7 +13,7 @@
 #include "talus/dem/builder.hpp"
 #include "talus/dem/membrane/body.hpp"
 #include "talus/dem/packing.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::dem {
 namespace {

@@ -122,7 +122,7 @@ TEST(Flume, RejectsGeometriesThatDoNotFit) {
 TEST(Flume, WallParamsBuildTwoDimensionalWallsOnThePath) {
   const FlumeGeometry f = make_flume(7, 0.10);
   const FlumeWalls w = f.walls("metal");
-  for (const dem::WallParams* p : {&w.chute, &w.arc, &w.barrier, &w.gate, &w.lid}) {
+  for (const WallParams* p : {&w.chute, &w.arc, &w.barrier, &w.gate, &w.lid}) {
     EXPECT_EQ(p->material, "metal");
     const Wall wall = make_wall(*p, 0, 2);
     EXPECT_EQ(wall.current.size(), 1u);

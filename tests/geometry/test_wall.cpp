@@ -13,10 +13,10 @@ namespace {
 
 constexpr double kTol = 1e-12;
 
-dem::WallParams segment_params(const Vec3& a, const Vec3& b) {
-  dem::WallParams w;
+WallParams segment_params(const Vec3& a, const Vec3& b) {
+  WallParams w;
   w.name = "seg";
-  w.kind = dem::WallKind::Segment;
+  w.kind = WallKind::Segment;
   w.a = a;
   w.b = b;
   return w;
@@ -27,7 +27,7 @@ void expect_vec(const Vec3& got, const Vec3& want, double tol = kTol) {
 }
 
 TEST(WallMotion, TranslationOnlyBetweenStartAndStop) {
-  dem::WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
+  WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
   w.motion.velocity = Vec3(2, 1, 0);
   w.motion.move_start = 0.5;
   w.motion.move_stop = 1.5;
@@ -50,7 +50,7 @@ TEST(WallMotion, TranslationOnlyBetweenStartAndStop) {
 
 TEST(WallMotion, RotationOfSegmentAndArcAboutPivot) {
   // A quarter turn about z in 1 s (omega = pi/2) about the origin.
-  dem::WallParams s = segment_params(Vec3(1, 0, 0), Vec3(2, 0, 0));
+  WallParams s = segment_params(Vec3(1, 0, 0), Vec3(2, 0, 0));
   s.motion.angular_velocity = Vec3(0, 0, M_PI / 2);
   Wall seg = make_wall(s, 0, 2);
   seg.update(1.0);
@@ -59,9 +59,9 @@ TEST(WallMotion, RotationOfSegmentAndArcAboutPivot) {
   // omega x r = (pi/2) z x (0,1,0) = (-pi/2, 0, 0).
   expect_vec(seg.velocity_at(Vec3(0, 1, 0), 1.0), Vec3(-M_PI / 2, 0, 0));
 
-  dem::WallParams a;
+  WallParams a;
   a.name = "arc";
-  a.kind = dem::WallKind::Arc;
+  a.kind = WallKind::Arc;
   a.center = Vec3(3, 0, 0);
   a.radius = 1;
   a.angle_start = 0;
@@ -75,9 +75,9 @@ TEST(WallMotion, RotationOfSegmentAndArcAboutPivot) {
 }
 
 TEST(WallMotion, RotationWithTranslationTurnsAboutTheMovingPivot) {
-  dem::WallParams p;
+  WallParams p;
   p.name = "paddle";
-  p.kind = dem::WallKind::Plane;
+  p.kind = WallKind::Plane;
   p.point = Vec3(2, 0, 0);
   p.normal = Vec3(1, 0, 0);
   p.motion.pivot = Vec3(1, 0, 0);
@@ -94,9 +94,9 @@ TEST(WallMotion, RotationWithTranslationTurnsAboutTheMovingPivot) {
 }
 
 TEST(WallMotion, SinusoidalVibration) {
-  dem::WallParams p;
+  WallParams p;
   p.name = "floor";
-  p.kind = dem::WallKind::Plane;
+  p.kind = WallKind::Plane;
   p.point = Vec3(0, 0, 0);
   p.normal = Vec3(0, 0, 1);
   p.motion.amplitude = 0.01;
@@ -115,7 +115,7 @@ TEST(WallMotion, SinusoidalVibration) {
 }
 
 TEST(WallMotion, Removal) {
-  dem::WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
+  WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
   w.motion.remove_at = 1.0;
   const Wall wall = make_wall(w, 0, 2);
   EXPECT_TRUE(wall.active(0.999));
@@ -126,9 +126,9 @@ TEST(WallMotion, Removal) {
 // All motions at once: the velocity of a material point equals the central
 // difference of its position under update().
 TEST(WallMotion, VelocityMatchesFiniteDifferenceOfUpdate) {
-  dem::WallParams p;
+  WallParams p;
   p.name = "tri";
-  p.kind = dem::WallKind::Triangle;
+  p.kind = WallKind::Triangle;
   p.vertices = {Vec3(1, 0, 0), Vec3(0, 2, 0), Vec3(0, 0, 1.5)};
   p.motion.velocity = Vec3(0.3, -0.2, 0.1);
   p.motion.angular_velocity = Vec3(0.5, -1.0, 2.0);
@@ -156,7 +156,7 @@ TEST(WallMotion, VelocityMatchesFiniteDifferenceOfUpdate) {
 }
 
 TEST(WallMotion, UpdateIsExactAndIndependentOfHistory) {
-  dem::WallParams w = segment_params(Vec3(0.3, 0.1, 0), Vec3(1, 0.7, 0));
+  WallParams w = segment_params(Vec3(0.3, 0.1, 0), Vec3(1, 0.7, 0));
   w.motion.velocity = Vec3(1, 2, 0);
   w.motion.angular_velocity = Vec3(0, 0, 3);
   w.motion.amplitude = 0.1;
@@ -170,7 +170,7 @@ TEST(WallMotion, UpdateIsExactAndIndependentOfHistory) {
 }
 
 TEST(WallBounds, UnionOfCurrentPrimitives) {
-  dem::WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 2, 0));
+  WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 2, 0));
   w.motion.velocity = Vec3(1, 0, 0);
   Wall wall = make_wall(w, 0, 2);
   wall.update(2.0);  // moved by (2,0,0)
@@ -187,9 +187,9 @@ TEST(MakeWall, MeshFromStlWithScaleAndOffset) {
   ASSERT_TRUE(make_triangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), t1));
   ASSERT_TRUE(make_triangle(Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), t2));
   write_stl(path, {t1, t2}, true);
-  dem::WallParams w;
+  WallParams w;
   w.name = "box";
-  w.kind = dem::WallKind::Mesh;
+  w.kind = WallKind::Mesh;
   w.file = path;
   w.scale = 2.0;
   w.offset = Vec3(0, 0, 1);
@@ -200,7 +200,7 @@ TEST(MakeWall, MeshFromStlWithScaleAndOffset) {
 }
 
 // make_wall must throw InputError whose message names the wall.
-void expect_rejected(dem::WallParams w, int dimension, const std::string& fragment) {
+void expect_rejected(WallParams w, int dimension, const std::string& fragment) {
   w.name = "culprit";
   try {
     make_wall(w, 0, dimension);
@@ -216,48 +216,48 @@ TEST(MakeWall, RejectsBadGeometry) {
   expect_rejected(segment_params(Vec3(1, 1, 0), Vec3(1, 1, 0)), 2, "coincide");
   // Differs only in z, which 2D ignores.
   expect_rejected(segment_params(Vec3(1, 1, 0), Vec3(1, 1, 5)), 2, "coincide");
-  dem::WallParams plane;
-  plane.kind = dem::WallKind::Plane;
+  WallParams plane;
+  plane.kind = WallKind::Plane;
   plane.normal = Vec3::Zero();
   expect_rejected(plane, 3, "normal");
   plane.normal = Vec3::UnitZ();
   expect_rejected(plane, 2, "normal");  // a 2D line needs an in-plane normal
-  dem::WallParams tri;
-  tri.kind = dem::WallKind::Triangle;
+  WallParams tri;
+  tri.kind = WallKind::Triangle;
   tri.vertices = {Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2)};
   expect_rejected(tri, 3, "degenerate");
   tri.vertices.pop_back();
   expect_rejected(tri, 3, "3 vertices");
-  dem::WallParams arc;
-  arc.kind = dem::WallKind::Arc;
+  WallParams arc;
+  arc.kind = WallKind::Arc;
   arc.radius = 0;
   arc.angle_end = 1;
   expect_rejected(arc, 2, "radius");
   arc.radius = 1;
   arc.angle_end = -1;
   expect_rejected(arc, 2, "angle_end");
-  dem::WallParams cyl;
-  cyl.kind = dem::WallKind::Cylinder;
+  WallParams cyl;
+  cyl.kind = WallKind::Cylinder;
   cyl.radius = -1;
   expect_rejected(cyl, 3, "radius");
-  dem::WallParams mesh;
-  mesh.kind = dem::WallKind::Mesh;
+  WallParams mesh;
+  mesh.kind = WallKind::Mesh;
   mesh.file = "/nonexistent/talus.stl";
   EXPECT_THROW(make_wall(mesh, 0, 3), InputError);
 }
 
 TEST(MakeWall, RejectsKindsOfTheOtherDimensionAndBadMotion) {
-  dem::WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
+  WallParams w = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
   expect_rejected(w, 3, "not available in 3D");
-  w.kind = dem::WallKind::Arc;
+  w.kind = WallKind::Arc;
   expect_rejected(w, 3, "not available in 3D");
-  w.kind = dem::WallKind::Triangle;
+  w.kind = WallKind::Triangle;
   expect_rejected(w, 2, "not available in 2D");
-  w.kind = dem::WallKind::Cylinder;
+  w.kind = WallKind::Cylinder;
   expect_rejected(w, 2, "not available in 2D");
-  w.kind = dem::WallKind::Mesh;
+  w.kind = WallKind::Mesh;
   expect_rejected(w, 2, "not available in 2D");
-  dem::WallParams m = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
+  WallParams m = segment_params(Vec3(0, 0, 0), Vec3(1, 0, 0));
   m.motion.angular_velocity = Vec3(1, 0, 0);
   expect_rejected(m, 2, "about z");
   m.motion.angular_velocity = Vec3::Zero();

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::io::cases {
 

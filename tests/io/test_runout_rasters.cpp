@@ -15,7 +15,7 @@
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/raster.hpp"
-#include "talus/io/scenario_runout.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::io {
 namespace {

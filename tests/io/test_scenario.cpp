@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::io {
 namespace {

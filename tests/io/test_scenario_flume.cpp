@@ -4,7 +4,7 @@
 
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::io {
 namespace {

@@ -7,8 +7,8 @@
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/dem/builder.hpp"
-#include "talus/io/scenario.hpp"
-#include "talus/io/scenario_runout.hpp"
+#include "talus/scenario/scenario.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::io {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_mpm.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::io::mpm_cases {
 

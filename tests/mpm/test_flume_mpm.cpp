@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario.hpp"
-#include "talus/io/scenario_mpm.hpp"
 #include "talus/mpm/flume.hpp"
 #include "talus/mpm/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::mpm {
 namespace {

@@ -9,12 +9,12 @@
 #include <string>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario.hpp"
-#include "talus/io/scenario_mpm.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/scenario.hpp"
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/mpm.hpp"
+#include "talus/scenario/scenario.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::mpm {
 namespace {

@@ -22,7 +22,7 @@
 
 #include <cstdio>
 
-#include "talus/io/scenario_mpm.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::mpm {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "mpm_scenario_cases.hpp"
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_mpm.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::io {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "mpm_scenario_cases.hpp"
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_mpm.hpp"
 #include "talus/mpm/scenario.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::io {
 namespace {

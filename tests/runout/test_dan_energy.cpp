@@ -6,10 +6,10 @@
 #include <string>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_runout.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/release.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::runout {
 namespace {

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
-#include "talus/io/scenario_runout.hpp"
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/builder.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::runout {
 namespace {

@@ -40,10 +40,10 @@
 #include <cstdio>
 #include <string>
 
-#include "talus/io/scenario_runout.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/grid/fv2d.hpp"
 #include "talus/runout/grid/path_terrain.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::runout {
 namespace {

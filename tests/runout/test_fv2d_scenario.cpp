@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_runout.hpp"
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::io {
 namespace {

@@ -8,8 +8,8 @@
 #include <fstream>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_runout.hpp"
 #include "talus/runout/builder.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::io {
 namespace {

@@ -5,11 +5,6 @@
 
 namespace talus::analysis {
 
-Vec2 bed_normal(const geometry::FlumeGeometry& g, double s) {
-  const Vec2 t = g.tangent_at(s);
-  return {-t.y(), t.x()};
-}
-
 double bed_low_point(const geometry::FlumeGeometry& g) {
   // The arc turns from falling (chute) to rising (barrier) through the
   // horizontal, so its lowest point is straight below the centre.

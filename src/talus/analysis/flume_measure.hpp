@@ -57,7 +57,4 @@ double deposit_tail(const std::vector<ProfileBin>& profile, double min_thickness
 // Lowest elevation of the flume bed (on the arc): the datum of run-up heights.
 double bed_low_point(const geometry::FlumeGeometry& g);
 
-// Inner unit normal of the bed at path coordinate s (into the flow).
-Vec2 bed_normal(const geometry::FlumeGeometry& g, double s);
-
 }  // namespace talus::analysis

@@ -8,10 +8,17 @@
 #include <vector>
 
 #include "talus/core/space.hpp"
+#include "talus/geometry/flume_params.hpp"
+#include "talus/geometry/wall_params.hpp"
 
 namespace talus::dem {
 
-inline constexpr double kNever = std::numeric_limits<double>::infinity();
+using geometry::kNever;
+// Wall and flume descriptions belong to the geometry layer, which builds them.
+using geometry::FlumeParams;
+using geometry::WallKind;
+using geometry::WallMotionParams;
+using geometry::WallParams;
 
 struct MaterialParams {
   std::string name;
@@ -54,48 +61,6 @@ struct ContactParams {
   // EPSD (type C) rolling resistance
   double epsd_stiffness_factor = 2.25;  // k_r = factor * mu_r^2 * R_eff^2 * k_n (Ai et al.)
   double epsd_damping_ratio = 0.3;      // eta_r of the critical rotational damping
-};
-
-enum class WallKind { Segment, Arc, Plane, Triangle, Mesh, Cylinder };
-
-struct WallMotionParams {
-  Vec3 velocity = Vec3::Zero();          // translation, m/s
-  double move_start = 0.0;               // s
-  double move_stop = kNever;             // s
-  Vec3 angular_velocity = Vec3::Zero();  // rad/s about pivot
-  Vec3 pivot = Vec3::Zero();
-  double amplitude = 0.0;  // m, vibration x(t) = A sin(2 pi f t + phase) along direction
-  double frequency = 0.0;  // Hz
-  double phase = 0.0;      // rad
-  Vec3 direction = Vec3::UnitZ();
-  double remove_at = kNever;  // s
-  // Stress control of a plane wall (the triaxial test's plates, Götz 2024
-  // §3.3.1): while t < servo_stop the wall moves along its normal n (towards
-  // the particles) at v = servo_speed * clamp((p* - p) / p*, -1, 1), where
-  // p = -F.n / servo_area is the pressure the particles exert on it and p* =
-  // servo_pressure; afterwards it stays where the servo left it (plus any
-  // prescribed motion). servo_pressure = 0: no servo.
-  double servo_pressure = 0.0;  // Pa
-  double servo_area = 0.0;      // m^2
-  double servo_speed = 0.0;     // m/s, the largest servo speed
-  double servo_stop = 0.0;      // s
-};
-
-struct WallParams {
-  std::string name;
-  WallKind kind = WallKind::Plane;
-  std::string material;
-  // Segment: a, b. Arc: center, radius, angle_start, angle_end (radians, counter-clockwise).
-  // Plane: point, normal. Triangle: vertices[0..2]. Mesh: file (STL), scale, offset.
-  // Cylinder: point (on axis), axis, radius, inside, length (kNever = infinite).
-  Vec3 a = Vec3::Zero(), b = Vec3::Zero(), center = Vec3::Zero(), point = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ(), axis = Vec3::UnitZ(), offset = Vec3::Zero();
-  std::vector<Vec3> vertices;
-  double radius = 0.0, angle_start = 0.0, angle_end = 0.0, scale = 1.0, length = kNever;
-  bool inside = true;
-  std::string file;
-  WallMotionParams motion;
-  bool generated = false;  // by [flume] or [dam_break], which the resolved scenario writes instead
 };
 
 // One particle given explicitly (verification cases, small tests).
@@ -165,26 +130,6 @@ struct RunParams {
   double ke_blowup_factor = 10.0;
   // Where time_step was set ("file:line: [run] 'time_step'"), for messages.
   std::string time_step_source;
-};
-
-// The Mancarella & Hungr flume (spec: flume.md) built from the barrier angle
-// and arc radius: [flume] generates the walls chute, arc, barrier, gate and
-// lid (2D) and, with [flume.release], the fill behind the gate; a run with it
-// reports the flume analysis (front along the path, deposit, run-up, forces).
-struct FlumeParams {
-  double beta = 0.0;                     // barrier angle, rad
-  double arc_radius = 0.10;              // m
-  std::optional<double> l_star;          // chute top to corner, m (default: Kuen's Table 2)
-  std::optional<double> barrier_length;  // corner to barrier end, m (default: Table 2)
-  std::string wall_material;
-  bool lift_gate = false;    // false: the gate is deleted at gate_open (Kuen's variant I)
-  double gate_speed = 2.25;  // m/s upwards when lifted (variant II)
-  double gate_open = 0.0;    // s
-  // Analysis
-  int layers = 5;                 // horizontal bands of the settled mass, for colouring
-  double front_quantile = 0.998;  // front = this quantile of the particles' path coordinate
-  double profile_bin = 0.01;      // m of path per bin of the deposit profile
-  double tail_thickness = 0.0;    // m; main deposit = thicker than this (0: 3 mean diameters)
 };
 
 // The dam-break test used to calibrate the grain friction (spec: flume.md

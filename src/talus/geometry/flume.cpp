@@ -177,9 +177,9 @@ double FlumeGeometry::path_coordinate(const Vec2& x) const {
 
 FlumeWalls FlumeGeometry::walls(const std::string& material) const {
   auto segment_wall = [&](const char* name, const Vec2& a, const Vec2& b) {
-    dem::WallParams w;
+    WallParams w;
     w.name = name;
-    w.kind = dem::WallKind::Segment;
+    w.kind = WallKind::Segment;
     w.material = material;
     w.a = Space<2>::to3(a);
     w.b = Space<2>::to3(b);
@@ -188,7 +188,7 @@ FlumeWalls FlumeGeometry::walls(const std::string& material) const {
   FlumeWalls walls;
   walls.chute = segment_wall("chute", chute_start, chute_end);
   walls.arc.name = "arc";
-  walls.arc.kind = dem::WallKind::Arc;
+  walls.arc.kind = WallKind::Arc;
   walls.arc.material = material;
   walls.arc.center = Space<2>::to3(arc_centre);
   walls.arc.radius = radius;

@@ -21,14 +21,15 @@
 #include <string>
 
 #include "talus/core/space.hpp"
-#include "talus/dem/params.hpp"
+#include "talus/geometry/flume_params.hpp"
+#include "talus/geometry/wall_params.hpp"
 
 namespace talus::geometry {
 
 using Vec2 = Eigen::Vector2d;
 
 struct FlumeWalls {
-  dem::WallParams chute, arc, barrier, gate, lid;  // named W1..W5
+  WallParams chute, arc, barrier, gate, lid;  // named W1..W5
 };
 
 struct FlumeGeometry {
@@ -84,7 +85,13 @@ FlumeGeometry make_flume(double beta_deg, double arc_radius,
                          std::optional<double> barrier_length = std::nullopt);
 
 // The flume of a scenario's [flume] table.
-inline FlumeGeometry make_flume(const dem::FlumeParams& f) {
+// Inner unit normal of the bed at path coordinate s (into the flow).
+inline Vec2 bed_normal(const FlumeGeometry& g, double s) {
+  const Vec2 t = g.tangent_at(s);
+  return {-t.y(), t.x()};
+}
+
+inline FlumeGeometry make_flume(const FlumeParams& f) {
   return make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
 }
 

@@ -13,13 +13,11 @@ namespace talus::geometry {
 namespace {
 
 // Time spent moving by t: translation and rotation run on [move_start, move_stop).
-double moving_time(const dem::WallMotionParams& m, double t) {
+double moving_time(const WallMotionParams& m, double t) {
   return std::clamp(t - m.move_start, 0.0, std::max(0.0, m.move_stop - m.move_start));
 }
 
-bool moving_at(const dem::WallMotionParams& m, double t) {
-  return t >= m.move_start && t < m.move_stop;
-}
+bool moving_at(const WallMotionParams& m, double t) { return t >= m.move_start && t < m.move_stop; }
 
 }  // namespace
 
@@ -115,20 +113,20 @@ void Wall::bounds(Vec3& lo, Vec3& hi) const {
 
 namespace {
 
-[[noreturn]] void fail(const dem::WallParams& w, const std::string& what) {
+[[noreturn]] void fail(const WallParams& w, const std::string& what) {
   throw InputError(fmt::format("wall '{}': {}", w.name, what));
 }
 
 // Relative tolerance for degenerate geometry, in units of the coordinates' size.
 constexpr double kDegenerate = 1e-12;
 
-Vec3 unit(const dem::WallParams& w, const Vec3& v, const char* key) {
+Vec3 unit(const WallParams& w, const Vec3& v, const char* key) {
   const double len = v.norm();
   if (!(len > 0) || !std::isfinite(len)) fail(w, fmt::format("{} must be a non-zero vector", key));
   return v / len;
 }
 
-Primitive segment(const dem::WallParams& w) {
+Primitive segment(const WallParams& w) {
   const double scale = std::max({1.0, w.a.norm(), w.b.norm()});
   if ((w.b - w.a).norm() <= kDegenerate * scale) fail(w, "segment end points a and b coincide");
   Primitive p;
@@ -138,7 +136,7 @@ Primitive segment(const dem::WallParams& w) {
   return p;
 }
 
-Primitive arc(const dem::WallParams& w) {
+Primitive arc(const WallParams& w) {
   if (!(w.radius > 0)) fail(w, "radius must be positive");
   if (!(w.angle_end > w.angle_start) || !std::isfinite(w.angle_end - w.angle_start))
     fail(w, "angle_end must be greater than angle_start");
@@ -151,7 +149,7 @@ Primitive arc(const dem::WallParams& w) {
   return p;
 }
 
-Primitive plane(const dem::WallParams& w, int dimension) {
+Primitive plane(const WallParams& w, int dimension) {
   Primitive p;
   p.kind = PrimitiveKind::Plane;
   p.p0 = w.point;
@@ -165,7 +163,7 @@ Primitive plane(const dem::WallParams& w, int dimension) {
   return p;
 }
 
-Primitive cylinder(const dem::WallParams& w) {
+Primitive cylinder(const WallParams& w) {
   if (!(w.radius > 0)) fail(w, "radius must be positive");
   if (!(w.length > 0)) fail(w, "length must be positive");
   Primitive p;
@@ -178,8 +176,8 @@ Primitive cylinder(const dem::WallParams& w) {
   return p;
 }
 
-void check_motion(const dem::WallParams& w, int dimension) {
-  const dem::WallMotionParams& m = w.motion;
+void check_motion(const WallParams& w, int dimension) {
+  const WallMotionParams& m = w.motion;
   if (m.move_stop < m.move_start) fail(w, "move_stop must not be before move_start");
   if (m.amplitude != 0) {
     unit(w, m.direction, "direction");
@@ -193,19 +191,19 @@ void check_motion(const dem::WallParams& w, int dimension) {
   }
 }
 
-const char* kind_name(dem::WallKind kind) {
+const char* kind_name(WallKind kind) {
   switch (kind) {
-    case dem::WallKind::Segment:
+    case WallKind::Segment:
       return "segment";
-    case dem::WallKind::Arc:
+    case WallKind::Arc:
       return "arc";
-    case dem::WallKind::Plane:
+    case WallKind::Plane:
       return "plane";
-    case dem::WallKind::Triangle:
+    case WallKind::Triangle:
       return "triangle";
-    case dem::WallKind::Mesh:
+    case WallKind::Mesh:
       return "mesh";
-    case dem::WallKind::Cylinder:
+    case WallKind::Cylinder:
       return "cylinder";
   }
   return "?";
@@ -213,13 +211,13 @@ const char* kind_name(dem::WallKind kind) {
 
 }  // namespace
 
-Wall make_wall(const dem::WallParams& params, int material_index, int dimension) {
-  dem::WallParams w = params;
+Wall make_wall(const WallParams& params, int material_index, int dimension) {
+  WallParams w = params;
   if (dimension == 2) w.a.z() = w.b.z() = w.center.z() = w.point.z() = 0;  // 2D walls lie in z = 0
   if (dimension != 2 && dimension != 3)
     fail(w, fmt::format("dimension {} is not 2 or 3", dimension));
-  const bool kind_2d = w.kind == dem::WallKind::Segment || w.kind == dem::WallKind::Arc;
-  const bool kind_3d = w.kind != dem::WallKind::Plane && !kind_2d;
+  const bool kind_2d = w.kind == WallKind::Segment || w.kind == WallKind::Arc;
+  const bool kind_3d = w.kind != WallKind::Plane && !kind_2d;
   if ((dimension == 2 && kind_3d) || (dimension == 3 && kind_2d))
     fail(w, fmt::format("kind '{}' is not available in {}D", kind_name(w.kind), dimension));
   check_motion(w, dimension);
@@ -230,16 +228,16 @@ Wall make_wall(const dem::WallParams& params, int material_index, int dimension)
   wall.dimension = dimension;
   wall.motion = w.motion;
   switch (w.kind) {
-    case dem::WallKind::Segment:
+    case WallKind::Segment:
       wall.reference.push_back(segment(w));
       break;
-    case dem::WallKind::Arc:
+    case WallKind::Arc:
       wall.reference.push_back(arc(w));
       break;
-    case dem::WallKind::Plane:
+    case WallKind::Plane:
       wall.reference.push_back(plane(w, dimension));
       break;
-    case dem::WallKind::Triangle: {
+    case WallKind::Triangle: {
       Primitive p;
       if (w.vertices.size() != 3)
         fail(w, fmt::format("a triangle needs 3 vertices, got {}", w.vertices.size()));
@@ -248,18 +246,18 @@ Wall make_wall(const dem::WallParams& params, int material_index, int dimension)
       wall.reference.push_back(p);
       break;
     }
-    case dem::WallKind::Mesh: {
+    case WallKind::Mesh: {
       if (!(w.scale > 0) || !std::isfinite(w.scale)) fail(w, "scale must be positive");
       wall.reference = read_stl(w.file, w.scale, w.offset);
       if (wall.reference.empty()) fail(w, fmt::format("mesh file '{}' has no triangles", w.file));
       break;
     }
-    case dem::WallKind::Cylinder:
+    case WallKind::Cylinder:
       wall.reference.push_back(cylinder(w));
       break;
   }
   if (w.motion.servo_pressure != 0) {
-    if (w.kind != dem::WallKind::Plane)
+    if (w.kind != WallKind::Plane)
       fail(w, "a servo needs a plane wall (it moves along the normal)");
     if (!(w.motion.servo_area > 0) || !(w.motion.servo_speed > 0))
       fail(w, "a servo needs a positive area and speed");

@@ -2,7 +2,7 @@
 // A wall: a set of primitives that moves as one rigid body and collects the
 // force the particles exert on it.
 //
-// Motion (dem::WallMotionParams), all exact functions of time so that a run
+// Motion (WallMotionParams), all exact functions of time so that a run
 // resumed from a checkpoint puts the walls exactly where they were:
 //   - translation with `velocity` while move_start <= t < move_stop,
 //   - rotation with `angular_velocity` about `pivot` over the same interval
@@ -19,8 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "talus/dem/params.hpp"
+#include "talus/geometry/flume_params.hpp"
 #include "talus/geometry/primitive.hpp"
+#include "talus/geometry/wall_params.hpp"
 
 namespace talus::geometry {
 
@@ -30,7 +31,7 @@ struct Wall {
   int dimension = 3;                 // 2 or 3
   std::vector<Primitive> reference;  // geometry as given, zero displacement
   std::vector<Primitive> current;    // geometry at the time of the last update()
-  dem::WallMotionParams motion;
+  WallMotionParams motion;
   // Filled by the solver. Torque is about the current pivot, pivot_at(t)
   // (the origin unless a pivot is given); impulse is the time integral of force.
   Vec3 force = Vec3::Zero();
@@ -92,6 +93,6 @@ struct Wall {
 // Turns validated wall parameters into a wall at t = 0. Throws InputError,
 // naming the wall, for degenerate geometry or a kind that does not exist in
 // `dimension` (2D: Segment, Arc, Plane; 3D: Plane, Triangle, Mesh, Cylinder).
-Wall make_wall(const dem::WallParams& params, int material_index, int dimension);
+Wall make_wall(const WallParams& params, int material_index, int dimension);
 
 }  // namespace talus::geometry

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "talus/analysis/flume_measure.hpp"
-
 namespace talus::mpm {
 
 RigidBody<2> path_wall(const std::function<Vec2(double)>& point,
@@ -35,7 +33,7 @@ RigidBody<2> path_wall(const std::function<Vec2(double)>& point,
 
 RigidBody<2> flume_bed(const geometry::FlumeGeometry& g, double spacing, int layers, double mu) {
   return path_wall([&g](double s) { return g.point_at(s); },
-                   [&g](double s) { return analysis::bed_normal(g, s); }, g.chute_start_s(),
+                   [&g](double s) { return geometry::bed_normal(g, s); }, g.chute_start_s(),
                    g.path_end_s(), spacing, layers, mu);
 }
 

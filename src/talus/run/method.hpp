@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "talus/io/scenario.hpp"
 #include "talus/run/simulation.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::run {
 

@@ -6,11 +6,11 @@
 #include <filesystem>
 
 #include "talus/core/error.hpp"
-#include "talus/io/compare_file.hpp"
-#include "talus/io/scenario.hpp"
 #include "talus/run/experiment.hpp"
 #include "talus/run/method.hpp"
 #include "talus/run/summary.hpp"
+#include "talus/scenario/compare_file.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace fs = std::filesystem;
 

@@ -4,7 +4,7 @@
 #include <fmt/core.h>
 
 #include "talus/analysis/flume_observer.hpp"
-#include "talus/mpm/flume_observer.hpp"
+#include "talus/analysis/mpm_flume_observer.hpp"
 #include "talus/run/experiments/bind.hpp"
 #include "talus/run/experiments/experiments.hpp"
 #include "talus/run/methods/dem.hpp"
@@ -71,7 +71,7 @@ ExperimentKind flume_experiment() {
             if (!mpm || !mpm->scenario().flume) return nullptr;
             const auto& s = mpm->solver();
             return bind_analysis("flume",
-                                 std::make_unique<mpm::MpmFlumeObserver>(
+                                 std::make_unique<analysis::MpmFlumeObserver>(
                                      ctx.out, *mpm->scenario().flume, s, ctx.resume, s.time),
                                  s);
           }};

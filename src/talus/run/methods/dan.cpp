@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <fstream>
 
-#include "talus/io/scenario_runout.hpp"
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/run/methods/runout.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::run {
 

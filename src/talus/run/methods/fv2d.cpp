@@ -5,10 +5,10 @@
 #include <cmath>
 #include <fstream>
 
-#include "talus/io/scenario_runout.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::run {
 

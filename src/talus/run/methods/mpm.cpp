@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <fstream>
 
-#include "talus/io/scenario_mpm.hpp"
 #include "talus/mpm/checkpoint.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/metrics.hpp"
 #include "talus/mpm/output_observer.hpp"
 #include "talus/mpm/scenario.hpp"
 #include "talus/run/methods/methods.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::run {
 

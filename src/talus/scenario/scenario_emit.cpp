@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
 namespace {

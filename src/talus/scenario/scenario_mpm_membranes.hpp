@@ -4,7 +4,7 @@
 // Documented in docs/scenario-format.md (MPM, [[membranes]]).
 #include <nlohmann/json.hpp>
 
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::io::detail {

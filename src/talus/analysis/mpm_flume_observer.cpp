@@ -1,4 +1,4 @@
-#include "talus/mpm/flume_observer.hpp"
+#include "talus/analysis/mpm_flume_observer.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -6,15 +6,15 @@
 #include "talus/analysis/dam_break.hpp"
 #include "talus/io/csv_reader.hpp"
 
-namespace talus::mpm {
+namespace talus::analysis {
 
 namespace {
 const std::vector<std::string> kFrontColumns = {"time",    "front_s",      "front_x", "front_y",
                                                 "runup_s", "runup_height", "on_chute"};
 }  // namespace
 
-MpmFlumeObserver::MpmFlumeObserver(std::filesystem::path out, const MpmFlumeParams& params,
-                                   const Solver<2>& s, bool resume, double resume_time)
+MpmFlumeObserver::MpmFlumeObserver(std::filesystem::path out, const mpm::MpmFlumeParams& params,
+                                   const mpm::Solver<2>& s, bool resume, double resume_time)
     : dir_(std::move(out) / "flume"), geometry_(flume_geometry(params)), params_(params) {
   std::filesystem::create_directories(dir_);
   double volume = 0.0;
@@ -26,22 +26,22 @@ MpmFlumeObserver::MpmFlumeObserver(std::filesystem::path out, const MpmFlumePara
   front_ = std::make_unique<io::CsvSeries>(csv, kFrontColumns, resume);
 }
 
-analysis::Grains MpmFlumeObserver::grains(const Solver<2>& s) const {
+analysis::Grains MpmFlumeObserver::grains(const mpm::Solver<2>& s) const {
   analysis::Grains g;
   g.x = s.particles.x;
   for (double v : s.particles.volume) g.r.push_back(0.5 * std::sqrt(v));
   return g;
 }
 
-void MpmFlumeObserver::on_series(const Solver<2>& s) {
+void MpmFlumeObserver::on_series(const mpm::Solver<2>& s) {
   const auto f = analysis::measure_front(geometry_, grains(s), params_.front_quantile);
   front_->row({s.time, f.front_s, f.front.x(), f.front.y(), f.runup_s, f.runup_height,
                static_cast<double>(f.on_chute)});
 }
 
-void MpmFlumeObserver::on_checkpoint(const Solver<2>&) { front_->flush(); }
+void MpmFlumeObserver::on_checkpoint(const mpm::Solver<2>&) { front_->flush(); }
 
-nlohmann::json MpmFlumeObserver::finish(const Solver<2>& s) {
+nlohmann::json MpmFlumeObserver::finish(const mpm::Solver<2>& s) {
   front_->flush();
   const analysis::Grains g = grains(s);
   const auto profile = analysis::deposit_profile(geometry_, g, params_.profile_bin);
@@ -105,4 +105,4 @@ nlohmann::json MpmFlumeObserver::finish(const Solver<2>& s) {
   return j;
 }
 
-}  // namespace talus::mpm
+}  // namespace talus::analysis

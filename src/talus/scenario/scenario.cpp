@@ -1,6 +1,6 @@
 // Loading a scenario file, and the top level of the DEM scenario: [run],
 // [contact], [output] and the checks that span several tables.
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include <system_error>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io {
 namespace {

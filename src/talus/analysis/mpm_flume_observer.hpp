@@ -18,30 +18,30 @@
 #include "talus/mpm/metrics.hpp"
 #include "talus/mpm/scenario.hpp"
 
-namespace talus::mpm {
+namespace talus::analysis {
 
 class MpmFlumeObserver final {
  public:
   // resume = true continues front.csv of a run interrupted at resume_time.
-  MpmFlumeObserver(std::filesystem::path out, const MpmFlumeParams& params, const Solver<2>& solver,
+  MpmFlumeObserver(std::filesystem::path out, const mpm::MpmFlumeParams& params, const mpm::Solver<2>& solver,
                    bool resume, double resume_time);
 
-  void on_series(const Solver<2>& s);
-  void on_checkpoint(const Solver<2>& s);
+  void on_series(const mpm::Solver<2>& s);
+  void on_checkpoint(const mpm::Solver<2>& s);
 
   // Writes the deposit files of the final state and returns the summary
   // numbers (front and run-up histories read back from front.csv, so that a
   // resumed run reports the whole run).
-  nlohmann::json finish(const Solver<2>& s);
+  nlohmann::json finish(const mpm::Solver<2>& s);
 
  private:
-  analysis::Grains grains(const Solver<2>& s) const;
+  analysis::Grains grains(const mpm::Solver<2>& s) const;
 
   std::filesystem::path dir_;
   geometry::FlumeGeometry geometry_;
-  MpmFlumeParams params_;
+  mpm::MpmFlumeParams params_;
   double spacing_ = 0.0;  // mean initial point spacing, m
   std::unique_ptr<io::CsvSeries> front_;
 };
 
-}  // namespace talus::mpm
+}  // namespace talus::analysis

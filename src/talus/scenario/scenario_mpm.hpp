@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::io {

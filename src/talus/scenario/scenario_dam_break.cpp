@@ -3,7 +3,7 @@
 // settled fill between them.
 #include <fmt/format.h>
 
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
 

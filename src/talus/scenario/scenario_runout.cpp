@@ -1,7 +1,7 @@
 // Runout scenario files: [run], [path], [material], [earth_pressure],
 // [smoothing], [release], [output]. Every key goes through a TomlReader, so a
 // bad or unknown key is reported with file, line and key before anything runs.
-#include "talus/io/scenario_runout.hpp"
+#include "talus/scenario/scenario_runout.hpp"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/raster.hpp"
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io {
 namespace {

@@ -4,8 +4,8 @@
 // ordered JSON object so that the keys keep the order of the documentation.
 #include <cmath>
 
-#include "talus/io/scenario.hpp"
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io {
 namespace {

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 #include "talus/runout/scenario.hpp"
 
 namespace talus::io {

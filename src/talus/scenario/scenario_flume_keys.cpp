@@ -3,7 +3,7 @@
 // two accept the same values and fail with the same messages.
 #include "talus/core/error.hpp"
 #include "talus/geometry/flume.hpp"
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::io::detail {

@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "talus/geometry/flume.hpp"
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
 namespace {

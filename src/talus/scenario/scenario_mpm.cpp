@@ -1,13 +1,13 @@
 // Reading and writing MPM scenarios.
-#include "talus/io/scenario_mpm.hpp"
+#include "talus/scenario/scenario_mpm.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
 
 #include "talus/geometry/oriented_box.hpp"
-#include "talus/io/scenario_detail.hpp"
-#include "talus/io/scenario_mpm_membranes.hpp"
+#include "talus/scenario/scenario_detail.hpp"
+#include "talus/scenario/scenario_mpm_membranes.hpp"
 
 namespace talus::io {
 namespace {

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
 namespace {

@@ -1,4 +1,4 @@
-#include "talus/io/scenario_mpm_membranes.hpp"
+#include "talus/scenario/scenario_mpm_membranes.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

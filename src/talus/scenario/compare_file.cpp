@@ -1,4 +1,4 @@
-#include "talus/io/compare_file.hpp"
+#include "talus/scenario/compare_file.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "talus/core/error.hpp"
-#include "talus/io/scenario.hpp"
+#include "talus/scenario/scenario.hpp"
 #include "talus/io/toml_reader.hpp"
 
 namespace talus::io {

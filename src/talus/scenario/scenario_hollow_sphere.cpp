@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "talus/io/scenario_detail.hpp"
+#include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
 namespace {
