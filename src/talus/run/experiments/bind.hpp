@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "talus/run/experiment.hpp"
+#include "talus/run/forward.hpp"
 
 namespace talus::run {
 
@@ -14,29 +15,23 @@ template <class Analysis, class State>
 class Bound : public Experiment {
  public:
   Bound(std::string name, std::unique_ptr<Analysis> analysis, const State& state)
-      : name_(std::move(name)), a_(std::move(analysis)), state_(state) {}
+      : name_(std::move(name)), a_(std::move(analysis)), calls_(*a_, state), state_(state) {}
 
   std::string name() const override { return name_; }
-  void on_series() override {
-    if constexpr (requires { a_->on_series(state_); }) a_->on_series(state_);
-  }
-  void on_snapshot() override {
-    if constexpr (requires { a_->on_snapshot(state_); }) a_->on_snapshot(state_);
-  }
-  void on_checkpoint() override {
-    if constexpr (requires { a_->on_checkpoint(state_); }) a_->on_checkpoint(state_);
-  }
+  void on_series() override { calls_.on_series(); }
+  void on_snapshot() override { calls_.on_snapshot(); }
+  void on_checkpoint() override { calls_.on_checkpoint(); }
   nlohmann::json finish() override {
     if constexpr (requires { a_->finish(state_); })
       return a_->finish(state_);
     else
       return a_->finish();
   }
-  Analysis& analysis() { return *a_; }
 
  private:
   std::string name_;
   std::unique_ptr<Analysis> a_;
+  Forward<Analysis, State> calls_;
   const State& state_;
 };
 

@@ -9,6 +9,7 @@
 
 #include "talus/dem/checkpoint.hpp"
 #include "talus/dem/health.hpp"
+#include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 
 namespace talus::run {
@@ -34,29 +35,9 @@ DemControl dem_control(const dem::DemScenario& sc) {
   return c;
 }
 
-namespace {
-
-class NoFiles final : public Observer {};
-
-template <int D>
-class DemFiles final : public Observer {
- public:
-  DemFiles(dem::DemOutputs<D>& files, const dem::DemRun<D>& run) : files_(files), run_(run) {}
-  void on_series() override { files_.on_series(run_); }
-  void on_snapshot() override { files_.on_snapshot(run_); }
-  void on_checkpoint() override { files_.on_checkpoint(run_); }
-  void on_progress() override { files_.flush(); }
-
- private:
-  dem::DemOutputs<D>& files_;
-  const dem::DemRun<D>& run_;
-};
-
-}  // namespace
-
 template <int D>
 DemSimulation<D>::DemSimulation(dem::DemRun<D>& run, DemControl control)
-    : run_(run), control_(std::move(control)), outputs_observer_(std::make_unique<NoFiles>()) {}
+    : run_(run), control_(std::move(control)), outputs_observer_(std::make_unique<Observer>()) {}
 
 template <int D>
 DemSimulation<D>::DemSimulation(dem::DemScenario scenario, std::unique_ptr<dem::DemRun<D>> run,
@@ -67,7 +48,7 @@ DemSimulation<D>::DemSimulation(dem::DemScenario scenario, std::unique_ptr<dem::
       scenario_(std::move(scenario)),
       threads_(threads) {
   files_ = std::make_unique<dem::DemOutputs<D>>(out, run_.system, resume, run_.system.time);
-  outputs_observer_ = std::make_unique<DemFiles<D>>(*files_, run_);
+  outputs_observer_ = std::make_unique<Forward<dem::DemOutputs<D>, dem::DemRun<D>>>(*files_, run_);
 }
 
 template <int D>

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
@@ -12,33 +13,15 @@
 
 namespace talus::run {
 
-namespace {
-
-class Fv2dFiles final : public Observer {
- public:
-  Fv2dFiles(runout::Fv2dOutputs& files, const runout::Fv2dSolver& solver)
-      : files_(files), solver_(solver) {}
-  void on_series() override { files_.on_series(solver_); }
-  void on_progress() override { files_.flush(); }
-
- private:
-  runout::Fv2dOutputs& files_;
-  const runout::Fv2dSolver& solver_;
-};
-
-class NoFiles final : public Observer {};
-
-}  // namespace
-
 Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
     : scenario_(std::move(scenario)),
       solver_(runout::build_fv2d(scenario_)),
-      outputs_(std::make_unique<NoFiles>()),
+      outputs_(std::make_unique<Observer>()),
       threads_(threads) {}
 
 void Fv2dSimulation::write_to(const std::filesystem::path& out) {
   files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid);
-  outputs_ = std::make_unique<Fv2dFiles>(*files_, solver_);
+  outputs_ = std::make_unique<Forward<runout::Fv2dOutputs, runout::Fv2dSolver>>(*files_, solver_);
 }
 
 Schedules Fv2dSimulation::schedules() const {

@@ -12,26 +12,13 @@
 #include "talus/mpm/metrics.hpp"
 #include "talus/mpm/output_observer.hpp"
 #include "talus/mpm/scenario.hpp"
+#include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::run {
 
 namespace {
-
-template <int D>
-class MpmFiles final : public Observer {
- public:
-  MpmFiles(mpm::MpmOutputs<D>& files, const mpm::Solver<D>& s) : files_(files), s_(s) {}
-  void on_series() override { files_.on_series(s_); }
-  void on_snapshot() override { files_.on_snapshot(s_); }
-  void on_checkpoint() override { files_.on_checkpoint(s_); }
-  void on_progress() override { files_.flush(); }
-
- private:
-  mpm::MpmOutputs<D>& files_;
-  const mpm::Solver<D>& s_;
-};
 
 std::vector<double> initial_cohesions(const mpm::MpmScenario& sc) {
   std::vector<double> c0;
@@ -51,7 +38,7 @@ MpmSimulation<D>::MpmSimulation(mpm::MpmScenario scenario, mpm::Solver<D> solver
   }
   files_ =
       std::make_unique<mpm::MpmOutputs<D>>(out, initial_cohesions(scenario_), resume, solver_.time);
-  files_observer_ = std::make_unique<MpmFiles<D>>(*files_, solver_);
+  files_observer_ = std::make_unique<Forward<mpm::MpmOutputs<D>, mpm::Solver<D>>>(*files_, solver_);
 }
 
 template <int D>
