@@ -66,8 +66,6 @@ class Simulation {
   // End of the run: results written once (deposit maps, front tables).
   virtual void finish() {}
   virtual MethodReport report() const = 0;
-  // A line or two of key results for the end of the run ("" for none).
-  virtual std::string headline() const { return ""; }
 };
 
 }  // namespace talus::run
