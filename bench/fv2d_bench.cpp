@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
       depth[g.index(i, j)] = i < n / 2 ? 2.0 + 0.5 * std::sin(0.1 * y) : 0.0;
     }
   Fv2dParams p;
-  p.rheology.kind = RheologyKind::Voellmy;
+  p.rheology.law = RheologyLaws::index_of(VoellmyRheology::name);
   p.rheology.tan_friction = 0.2, p.rheology.turbulence = 500;
   p.pressure.phi_internal = 35 * M_PI / 180, p.pressure.tan_phi_basal = 0.2;
   const Terrain terrain(g, bed);

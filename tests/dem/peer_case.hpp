@@ -1,6 +1,7 @@
 #pragma once
 // The 3D column collapse of the peer benchmark (../shared/peers/README.md §1),
 // built in code so the DEM tests do not depend on the scenario parser.
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/params.hpp"
 
 namespace talus::dem::cases {
@@ -15,7 +16,7 @@ inline DemScenario peer_column(int nx, int ny, int nz) {
   sc.run.skin = 0.0002;
   sc.run.domain_min = Vec3::Zero();
   sc.run.domain_max = Vec3(6 * nx * a, ny * a, 1.5 * nz * a);
-  sc.contact.model = ContactModel::HertzMindlin;
+  sc.contact.model = HertzMindlin::name;
   MaterialParams m;
   m.name = "glass";
   m.density = 2500;

@@ -9,6 +9,7 @@
 
 #include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 namespace talus::dem {
@@ -31,7 +32,7 @@ struct SpeedLog final : run::Observer {
 TEST(FrictionChange, BlockSlidesWithTheOldThenTheNewFriction) {
   const double theta = std::atan(0.6), mu0 = 0.3, mu1 = 0.45, R = 1.5e-3;
   const Vec3 g = kG * (std::sin(theta) * Vec3::UnitX() - std::cos(theta) * Vec3::UnitZ());
-  DemScenario sc = scenario(3, ContactModel::HertzMindlin, 0.0, g);
+  DemScenario sc = scenario(3, HertzMindlin::name, 0.0, g);
   sc.contact.lock_rotation = true;  // a block: it slides, it cannot roll
   sc.materials.push_back(hertz_material("grain", 2650, 1e8, 0.3, 0.5, mu0));
   sc.materials.push_back(rigid_material("rigid"));

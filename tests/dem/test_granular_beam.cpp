@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/system.hpp"
 
 namespace talus::dem {
@@ -23,7 +24,7 @@ DemScenario reduced_beam() {
   sc.run.dimension = 3;
   sc.run.gravity = Vec3::Zero();
   sc.run.seed = 5;
-  sc.contact.model = ContactModel::ViscoelasticHertz;
+  sc.contact.model = ViscoelasticHertz::name;
   sc.contact.tangential_damping = 0.3;
   // Götz Table 6, with the stiffest grains and membrane of the study.
   MaterialParams grain;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/contact/pair_coefficients.hpp"
 #include "talus/dem/membrane/from_spec.hpp"
 #include "talus/dem/membrane/gripper.hpp"
@@ -38,7 +39,7 @@ DemScenario pinned_sheet() {
   DemScenario sc;
   sc.run.dimension = 3;
   sc.run.gravity = Vec3::Zero();
-  sc.contact.model = ContactModel::ViscoelasticHertz;
+  sc.contact.model = ViscoelasticHertz::name;
   MaterialParams rubber;
   rubber.name = "rubber";
   rubber.density = 2000;

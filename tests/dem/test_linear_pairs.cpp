@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/contact/linear.hpp"
 #include "talus/dem/linear_pairs.hpp"
 #include "talus/dem/pair_kinematics.hpp"
@@ -132,7 +133,7 @@ TEST_P(LinearPairs, BlockLoopEqualsScalarLawBitForBit) {
       verification::linear_material("sand", 2672, 1e8, 1e8, 0.5, 0.28),
       verification::linear_material("soft", 2672, 3e6, 1e6, 0.2, 0.4)};
   ContactParams cp;
-  cp.model = ContactModel::Linear;
+  cp.model = LinearSpringDashpot::name;
   cp.dashpot_may_pull = cs.may_pull;
   const int m = cs.materials;
   std::vector<LinearSpringDashpot::Coeffs> coeffs;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/system.hpp"
 
 namespace talus::dem {
@@ -17,7 +18,7 @@ DemScenario sheet_scenario(bool pinned, const Vec3& gravity) {
   DemScenario sc;
   sc.run.dimension = 3;
   sc.run.gravity = gravity;
-  sc.contact.model = ContactModel::ViscoelasticHertz;
+  sc.contact.model = ViscoelasticHertz::name;
   MaterialParams grain;
   grain.name = "grain";
   grain.density = 2500;

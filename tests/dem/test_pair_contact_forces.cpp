@@ -7,6 +7,7 @@
 
 #include "talus/analysis/force_network.hpp"
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -20,7 +21,7 @@ constexpr double kR = 0.002, kE = 1e8, kNu = 0.245, kRho = 2000, kMu = 0.3;
 // Two 2 mm spheres along x, overlapping by `overlap`, the second moving at
 // `slide` along y; no gravity, restitution 1 (no normal damping).
 std::unique_ptr<DemRun<3>> pair_run(double overlap, double slide) {
-  DemScenario sc = scenario(3, ContactModel::HertzMindlin, 1e-7, Vec3::Zero());
+  DemScenario sc = scenario(3, HertzMindlin::name, 1e-7, Vec3::Zero());
   sc.materials.push_back(hertz_material("grain", kRho, kE, kNu, 1.0, kMu));
   const double half = kR - 0.5 * overlap;
   add_balls(sc, {ball(-half * Vec3::UnitX(), Vec3::Zero(), kR, "grain"),

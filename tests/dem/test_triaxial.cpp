@@ -8,6 +8,7 @@
 
 #include "talus/analysis/triaxial.hpp"
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/membrane/membrane_step.hpp"
 #include "talus/dem/packing.hpp"
 
@@ -41,7 +42,7 @@ TEST(TriaxialServo, PlateSettlesAtTheHertzGapOfOneSphere) {
   const double R = 2.5e-3, E = 4.6e10, nu = 0.245, F = 1.0;
   DemScenario sc;
   sc.run.gravity = Vec3::Zero();
-  sc.contact.model = ContactModel::ViscoelasticHertz;
+  sc.contact.model = ViscoelasticHertz::name;
   sc.materials = {glass(E)};
   WallParams top = plate("top", 2 * R, -1);
   top.motion.servo_pressure = 1e4;
@@ -79,7 +80,7 @@ TEST(TriaxialServo, StopsAtServoStopAndHandsOverToTheVelocity) {
   // servo_stop, then at its prescribed velocity: displacement exact by construction.
   DemScenario sc;
   sc.run.gravity = Vec3::Zero();
-  sc.contact.model = ContactModel::ViscoelasticHertz;
+  sc.contact.model = ViscoelasticHertz::name;
   sc.materials = {glass(4.6e10)};
   WallParams top = plate("top", 0.05, -1);
   top.motion.servo_pressure = 1e5;

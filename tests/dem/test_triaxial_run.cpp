@@ -9,6 +9,7 @@
 
 #include "talus/analysis/triaxial.hpp"
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/membrane/membrane_step.hpp"
 
 namespace talus::dem {
@@ -37,7 +38,7 @@ DemScenario reduced_case() {
   DemScenario sc;
   sc.run.gravity = Vec3::Zero();
   sc.run.seed = 3;
-  sc.contact.model = ContactModel::ViscoelasticHertz;
+  sc.contact.model = ViscoelasticHertz::name;
   MaterialParams glass;
   glass.name = "glass";
   glass.density = 2000;

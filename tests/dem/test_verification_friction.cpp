@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -29,7 +30,7 @@ TYPED_TEST_SUITE(Friction, Dims);
 template <int D>
 DemScenario incline(double theta, double mu, bool lock_rotation) {
   const Vec3 g = kG * (std::sin(theta) * Vec3::UnitX() - std::cos(theta) * up<D>());
-  DemScenario sc = scenario(D, D == 2 ? ContactModel::Linear : ContactModel::HertzMindlin, 0.0, g);
+  DemScenario sc = scenario(D, D == 2 ? LinearSpringDashpot::name : HertzMindlin::name, 0.0, g);
   sc.contact.lock_rotation = lock_rotation;
   if (D == 2) {
     sc.materials.push_back(linear_material("grain", 2650, 1e8, 1e8, 0.5, mu));
@@ -110,7 +111,7 @@ TYPED_TEST(Friction, InclineSlidesIffTanThetaExceedsMu) {
 TYPED_TEST(Friction, EpsdRollingDeceleratesAtFiveSeventhsMuRG) {
   constexpr int D = TypeParam::value;
   const double R = 5e-3, mu_r = 0.1, v0 = 0.5, k = Space<D>::inertia_factor();
-  DemScenario sc = scenario(D, ContactModel::HertzMindlin, 0.0, -kG * up<D>());
+  DemScenario sc = scenario(D, HertzMindlin::name, 0.0, -kG * up<D>());
   sc.contact.rolling = RollingModel::Epsd;
   MaterialParams grain = hertz_material("grain", 2650, 1e9, 0.3, 0.5, 0.5);
   grain.rolling_friction = mu_r;

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -57,7 +58,7 @@ TYPED_TEST(HertzImpact, ChungOoiCase1TwoEqualSpheres) {
     // 40.3 us: Chung & Ooi round the exact 40.34 us; the factor 2.87 gives 40.36 us.
     EXPECT_NEAR(h.duration, 40.3e-6, 0.1e-6);
   }
-  DemScenario sc = scenario(D, ContactModel::HertzMindlin, h.duration / kSteps, Vec3::Zero());
+  DemScenario sc = scenario(D, HertzMindlin::name, h.duration / kSteps, Vec3::Zero());
   sc.materials.push_back(hertz_material("glass", rho, E, nu, 1.0, 0.3));
   const double gap = 1e-5;
   add_balls(sc, {ball(-(R + gap) * Vec3::UnitX(), v * Vec3::UnitX(), R, "glass"),
@@ -91,7 +92,7 @@ TYPED_TEST(HertzImpact, ChungOoiCase2SphereOnRigidPlane) {
     EXPECT_NEAR(h.force, 11.4e3, 0.05e3);
     EXPECT_NEAR(h.duration, 0.73e-3, 0.005e-3);
   }
-  DemScenario sc = scenario(D, ContactModel::HertzMindlin, h.duration / kSteps, Vec3::Zero());
+  DemScenario sc = scenario(D, HertzMindlin::name, h.duration / kSteps, Vec3::Zero());
   sc.materials.push_back(hertz_material("aluminium", rho, E, nu, 1.0, 0.3));
   sc.materials.push_back(rigid_material("rigid"));
   sc.walls.push_back(floor_wall<D>("rigid"));
@@ -129,7 +130,7 @@ TYPED_TEST(HertzImpact, ChungOoiCase3RestitutionEqualsInput) {
       const double e_star = wall ? E / (1 - nu * nu) : E / (2 * (1 - nu * nu));
       const double t_c = wall ? hertz_prediction(e_star, R, m, v).duration
                               : hertz_prediction(e_star, R / 2, m / 2, 2 * v).duration;
-      DemScenario sc = scenario(D, ContactModel::HertzMindlin, t_c / 2000, Vec3::Zero());
+      DemScenario sc = scenario(D, HertzMindlin::name, t_c / 2000, Vec3::Zero());
       sc.materials.push_back(hertz_material("grain", rho, E, nu, e, 0.5));
       sc.materials.push_back(rigid_material("rigid"));
       double v_in;

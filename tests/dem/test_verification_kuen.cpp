@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/kuen_rolling.hpp"
 #include "verification_cases.hpp"
 
@@ -35,7 +36,7 @@ TYPED_TEST_SUITE(KuenRun, Dims);
 // Kuen's linear contacts; friction 0 so that no contact torque competes with
 // the rolling resistance.
 DemScenario kuen_scenario(int dim, double dt, const Vec3& gravity, double reference_step = 0.0) {
-  DemScenario sc = scenario(dim, ContactModel::Linear, dt, gravity);
+  DemScenario sc = scenario(dim, LinearSpringDashpot::name, dt, gravity);
   sc.contact.rolling = RollingModel::Kuen;
   sc.contact.kuen_wall_depth = kDepth;
   sc.contact.kuen_particle_factor = 0.5;

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -33,7 +34,7 @@ double linear_restitution(double kn, double beta, bool wall, bool may_pull) {
   // Touching half a step after the start, so runs with different k are the
   // same dimensionless problem step by step.
   const double gap = 0.5 * v * dt;
-  DemScenario sc = scenario(D, ContactModel::Linear, dt, Vec3::Zero());
+  DemScenario sc = scenario(D, LinearSpringDashpot::name, dt, Vec3::Zero());
   sc.contact.dashpot_may_pull = may_pull;
   sc.materials.push_back(linear_material("sand", rho, kn, kn, beta, 0.3));
   sc.materials.push_back(rigid_material("rigid"));

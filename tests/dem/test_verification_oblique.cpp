@@ -18,6 +18,7 @@
 #include <cstdio>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -46,7 +47,7 @@ Rebound oblique_impact(double theta_deg) {
   // Contact time of the normal Hertz impact (spec formula); 1500 steps per contact.
   const double e_star = kE / (2 * (1 - kNu * kNu));
   const double t_c = 2.87 * std::pow(m * m / (kR * e_star * e_star * vn), 0.2);
-  DemScenario sc = scenario(D, ContactModel::HertzMindlin, t_c / 1500, Vec3::Zero());
+  DemScenario sc = scenario(D, HertzMindlin::name, t_c / 1500, Vec3::Zero());
   sc.materials.push_back(hertz_material("alumina", kRho, kE, kNu, kE_n, kMu));
   sc.walls.push_back(floor_wall<D>("alumina"));
   add_balls(sc, {ball((kR + 1e-7) * up<D>(), vt * Vec3::UnitX() - vn * up<D>(), kR, "alumina")});

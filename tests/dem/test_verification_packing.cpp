@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -41,7 +42,7 @@ DemScenario packing_scenario(bool automatic_step = false) {
   const int nx = D == 3 ? 6 : 10, nz = D == 3 ? 8 : 16;
   const Vec3 box_max = D == 3 ? Vec3(nx * a, nx * a, nz * a) : Vec3(nx * a, nz * a, 0.0);
   DemScenario sc =
-      scenario(D, D == 3 ? ContactModel::HertzMindlin : ContactModel::Linear, 0.0, -kG * up<D>());
+      scenario(D, D == 3 ? HertzMindlin::name : LinearSpringDashpot::name, 0.0, -kG * up<D>());
   sc.contact.local_damping = 0.7;
   if (D == 3) {
     sc.materials.push_back(hertz_material("grain", 2500, 1e7, 0.3, 0.5, 0.5));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "support/dem_loop.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "verification_cases.hpp"
 
 using namespace talus;
@@ -49,7 +50,7 @@ TYPED_TEST(WallForcePeak, SingleStepPeakOfAnImpactAndResetPerRow) {
   const double m = rho * Space<D>::volume(R);
   const double t_c = M_PI * std::sqrt(m / k);
   const double dt = t_c / 4000;  // as test_verification_linear.cpp
-  DemScenario sc = scenario(D, ContactModel::Linear, dt, Vec3::Zero());
+  DemScenario sc = scenario(D, LinearSpringDashpot::name, dt, Vec3::Zero());
   sc.materials.push_back(linear_material("sand", rho, k, k, 0.0, 0.3));
   sc.materials.push_back(rigid_material("rigid"));
   sc.walls.push_back(floor_wall<D>("rigid"));

@@ -4,6 +4,7 @@
 
 #include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/geometry/stl.hpp"
 #include "verification_cases.hpp"
 
@@ -17,7 +18,7 @@ using namespace talus::dem::verification;
 // of the neighbour list at t = 0, must be found and hit on the way down.
 TEST(WallMotion, VibratingWallFindsParticlesOnEitherSide) {
   const double r = 1e-3, amplitude = 2e-3, frequency = 5.0;
-  DemScenario sc = scenario(3, ContactModel::HertzMindlin, 2e-6, Vec3::Zero());
+  DemScenario sc = scenario(3, HertzMindlin::name, 2e-6, Vec3::Zero());
   sc.materials = {hertz_material("glass", 2500, 1e7, 0.3, 0.5, 0.5), rigid_material("steel")};
   WallParams floor = floor_wall<3>("steel");
   floor.motion.amplitude = amplitude;
@@ -58,7 +59,7 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
   geometry::write_stl(stl, tris, true);
 
   auto rebound = [&](bool mesh, std::size_t* candidates, Vec3 at = Vec3(0.0033, 0.0071, 0)) {
-    DemScenario sc = scenario(3, ContactModel::HertzMindlin, 1e-6, Vec3::Zero());
+    DemScenario sc = scenario(3, HertzMindlin::name, 1e-6, Vec3::Zero());
     sc.materials = {hertz_material("glass", 2500, 1e7, 0.3, 0.5, 0.5), rigid_material("steel")};
     if (mesh) {
       WallParams w;
@@ -109,7 +110,7 @@ TEST(MeshWall, TiledFloorBouncesLikeAPlaneAndFindsOnlyNearbyTriangles) {
 // the run starts, and the gate must be gone after it.
 TEST(Settling, GateRemovedAtStartHoldsThePackingWhileItSettles) {
   const double gate_x = 0.03;
-  DemScenario sc = scenario(2, ContactModel::Linear, 0.0, Vec3(0, -9.81, 0));
+  DemScenario sc = scenario(2, LinearSpringDashpot::name, 0.0, Vec3(0, -9.81, 0));
   sc.materials = {linear_material("sand", 2672, 1e6, 1e6, 0.5, 0.3),
                   linear_material("steel", 1.0, 1e6, 1e6, 0.5, 0.4)};
   sc.walls.push_back(floor_wall<2>("steel"));

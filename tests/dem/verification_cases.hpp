@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "talus/dem/builder.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/params.hpp"
 
 namespace talus::dem::verification {
@@ -67,7 +68,7 @@ inline MaterialParams rigid_material(const std::string& name, double friction = 
   return m;
 }
 
-inline DemScenario scenario(int dimension, ContactModel model, double time_step,
+inline DemScenario scenario(int dimension, std::string_view model, double time_step,
                             const Vec3& gravity) {
   DemScenario sc;
   sc.name = "verification";

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "talus/dem/contact/laws.hpp"
 #include "talus/scenario/scenario.hpp"
 
 namespace talus::io {
@@ -44,7 +45,7 @@ TEST(Scenario, Full2dFileParsesToTheTypedValues) {
   EXPECT_EQ(s.run.seed, 42u);
   EXPECT_DOUBLE_EQ(s.run.ke_blowup_factor, 50.0);
 
-  EXPECT_EQ(s.contact.model, dem::ContactModel::Linear);
+  EXPECT_EQ(s.contact.model, dem::LinearSpringDashpot::name);
   EXPECT_EQ(s.contact.rolling, dem::RollingModel::Kuen);
   EXPECT_EQ(s.contact.friction_rule, dem::PairRule::Max);
   EXPECT_FALSE(s.contact.dashpot_may_pull);
@@ -150,7 +151,7 @@ TEST(Scenario, Full3dFileParsesToTheTypedValuesAndDefaults) {
   EXPECT_EQ(s.run.seed, 1u);
   EXPECT_DOUBLE_EQ(s.run.skin, 0.0);
 
-  EXPECT_EQ(s.contact.model, dem::ContactModel::HertzMindlin);
+  EXPECT_EQ(s.contact.model, dem::HertzMindlin::name);
   EXPECT_EQ(s.contact.rolling, dem::RollingModel::Epsd);
   EXPECT_EQ(s.contact.friction_rule, dem::PairRule::Harmonic);
   EXPECT_TRUE(s.contact.lock_rotation);

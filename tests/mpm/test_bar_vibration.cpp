@@ -24,7 +24,7 @@ Solver<2> make_bar(ShapeKind shape, Scheme scheme, double flip) {
       Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(kLength + 4 * h, h), h,
       {BoundaryKind::Fixed, BoundaryKind::Free, BoundaryKind::Roller, BoundaryKind::Roller});
   MaterialParams mp;
-  mp.model = MaterialModel::LinearElastic;
+  mp.model = LinearElastic::name;
   mp.density = kDensity;
   mp.youngs_modulus = kYoung;
   mp.poisson_ratio = 0.0;

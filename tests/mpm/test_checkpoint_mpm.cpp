@@ -30,7 +30,7 @@ MpmScenario block_on_turning_plate() {
   sc.grid.faces.fill(BoundaryKind::Free);
   MaterialParams m;
   m.name = "clay";
-  m.model = MaterialModel::DruckerPrager;
+  m.model = DruckerPrager::name;
   m.density = 2000.0;
   m.youngs_modulus = 1e6;
   m.poisson_ratio = 0.3;
@@ -165,7 +165,7 @@ TEST(MpmCheckpoint, RunWithTriangleMembraneResumesBitForBit) {
   sc.grid.faces.fill(BoundaryKind::Free);
   MaterialParams m;
   m.name = "block";
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = 2000.0;
   m.youngs_modulus = 1e6;
   m.poisson_ratio = 0.3;

@@ -33,7 +33,7 @@ MpmScenario column(ShapeKind shape) {
                    BoundaryKind::Free,   BoundaryKind::Free,   BoundaryKind::Free};
   MaterialParams sand;
   sand.name = "sand";
-  sand.model = MaterialModel::MohrCoulomb;
+  sand.model = MohrCoulomb::name;
   sand.density = 1600.0;
   sand.youngs_modulus = 840e3;
   sand.poisson_ratio = 0.3;

@@ -38,7 +38,7 @@ TEST(MpmFlumeWall, BlockSlidesDownInclinedFrictionWallAtCoulombAcceleration) {
   std::array<BoundaryKind, 4> faces;
   faces.fill(BoundaryKind::Free);
   MaterialParams m;
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = 1000.0;
   m.youngs_modulus = 2.5e5;
   m.poisson_ratio = 0.3;

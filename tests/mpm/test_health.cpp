@@ -21,7 +21,7 @@ namespace {
 
 MaterialParams clay(double psi_deg) {
   MaterialParams p;
-  p.model = MaterialModel::DruckerPrager;
+  p.model = DruckerPrager::name;
   p.density = 2400.0;
   p.youngs_modulus = 21.6e6;
   p.poisson_ratio = 0.2391;

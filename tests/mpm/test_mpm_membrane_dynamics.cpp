@@ -38,7 +38,7 @@ MpmScenario with_block(const V2& lo, const V2& hi, double h, const V2& p, const 
   sc.grid.faces.fill(BoundaryKind::Free);
   MaterialParams m;
   m.name = "mass";
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = kMass / (h * h);
   m.youngs_modulus = 1e6;
   m.poisson_ratio = 0.0;

@@ -39,7 +39,7 @@ Solver<3> hanging_block() {
   sc.grid.faces.fill(BoundaryKind::Free);
   MaterialParams m;
   m.name = "mass";
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = kMass / (kW * kH * kH);
   // Stiff against the strip: E A / h = 2e5 N/m against J w / l0 = 1e3 N/m.
   m.youngs_modulus = 1e6;

@@ -34,7 +34,7 @@ MpmScenario block_on_bed(double theta, const V2& v0) {
   sc.grid.faces.fill(BoundaryKind::Free);
   MaterialParams m;
   m.name = "block";
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = 2000.0;
   m.youngs_modulus = 2e6;
   m.poisson_ratio = 0.3;

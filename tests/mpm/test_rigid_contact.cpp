@@ -82,7 +82,7 @@ MpmScenario tilting_plate(double omega, double stop) {
   sc.grid.faces.fill(BoundaryKind::Free);
   MaterialParams m;
   m.name = "block";
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = 1000.0;
   m.youngs_modulus = 2.5e5;
   m.poisson_ratio = 0.3;

@@ -25,7 +25,7 @@ struct OneThread {
 MaterialParams elastic(double e, double nu, double rho) {
   MaterialParams m;
   m.name = "solid";
-  m.model = MaterialModel::LinearElastic;
+  m.model = LinearElastic::name;
   m.density = rho;
   m.youngs_modulus = e;
   m.poisson_ratio = nu;

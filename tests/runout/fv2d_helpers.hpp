@@ -28,7 +28,7 @@ inline Fv2dParams frictionless() {
 
 inline Fv2dParams frictional(double phi_b_deg, double phi_i_deg) {
   Fv2dParams p;
-  p.rheology.kind = RheologyKind::Frictional;
+  p.rheology.law = RheologyLaws::index_of(FrictionalRheology::name);
   p.rheology.tan_friction = std::tan(phi_b_deg * M_PI / 180.0);
   p.pressure.mode = EarthPressureMode::SavageHutter;
   p.pressure.phi_internal = phi_i_deg * M_PI / 180.0;

@@ -19,7 +19,7 @@ DanParams frictional(double phi_b_deg, double k) {
   DanParams p;
   p.density = 1600;
   p.gravity = g;
-  p.rheology.kind = RheologyKind::Frictional;
+  p.rheology.law = RheologyLaws::index_of(FrictionalRheology::name);
   p.rheology.tan_friction = std::tan(deg2rad(phi_b_deg));
   p.pressure.mode = EarthPressureMode::Constant;
   p.pressure.constant = k;

@@ -34,7 +34,6 @@ struct MaterialParams {
   double dissipation = 0.0;       // A in s (viscoelastic_hertz)
 };
 
-enum class ContactModel { Linear, HertzMindlin, ViscoelasticHertz };
 enum class RollingModel { None, Epsd, Kuen };
 // How two materials combine a coefficient (friction, rolling friction).
 enum class PairRule { Max, Min, Harmonic, Mean };
@@ -46,7 +45,7 @@ struct PairOverride {
 };
 
 struct ContactParams {
-  ContactModel model = ContactModel::HertzMindlin;
+  std::string model = "hertz_mindlin";  // a name from ContactLaws (contact/laws.hpp)
   RollingModel rolling = RollingModel::None;
   PairRule friction_rule = PairRule::Max;
   std::vector<PairOverride> pairs;

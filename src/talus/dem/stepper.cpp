@@ -6,10 +6,11 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 
-#include "talus/dem/contact/hertz_mindlin.hpp"
-#include "talus/dem/contact/linear.hpp"
+#include "talus/dem/contact/laws.hpp"
 #include "talus/dem/contact/rolling.hpp"
 #include "talus/dem/force_target.hpp"
 #include "talus/dem/hertz_pairs.hpp"
@@ -643,15 +644,10 @@ std::unique_ptr<StepperBase<D>> with_rolling(DemSystem<D>& s) {
 
 template <int D>
 std::unique_ptr<StepperBase<D>> make_stepper(DemSystem<D>& s) {
-  switch (s.contact.model) {
-    case ContactModel::Linear:
-      return with_rolling<D, LinearSpringDashpot>(s);
-    case ContactModel::HertzMindlin:
-      return with_rolling<D, HertzMindlin>(s);
-    case ContactModel::ViscoelasticHertz:
-      return with_rolling<D, ViscoelasticHertz>(s);
-  }
-  return nullptr;
+  const std::size_t law = ContactLaws::index_of(s.contact.model);
+  if (law == ContactLaws::size)
+    throw std::invalid_argument("unknown contact model " + s.contact.model);
+  return ContactLaws::visit(law, [&]<class Law>() { return with_rolling<D, Law>(s); });
 }
 
 template std::unique_ptr<StepperBase<2>> make_stepper<2>(DemSystem<2>&);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace talus::mpm {
 
@@ -118,23 +119,57 @@ double critical_volume_strain(const MaterialParams& p, double cell_size) {
                                   : p.critical_volume_strain;
 }
 
+LinearElastic LinearElastic::make(const MaterialParams& p) {
+  return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio), p.density};
+}
+NeoHookean NeoHookean::make(const MaterialParams& p) {
+  return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio), p.density};
+}
+DruckerPrager DruckerPrager::make(const MaterialParams& p) {
+  return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio),
+          p.density,
+          p.friction_angle,
+          p.dilatancy_angle,
+          p.cohesion,
+          p.tension_cutoff,
+          p.critical_volume_strain};
+}
+MohrCoulomb MohrCoulomb::make(const MaterialParams& p) {
+  return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio),
+          p.density,
+          p.friction_angle,
+          p.dilatancy_angle,
+          p.cohesion,
+          p.critical_volume_strain};
+}
+NewtonianFluid NewtonianFluid::make(const MaterialParams& p) {
+  return {p.bulk_modulus, p.viscosity, p.density};
+}
+
+KeyProblem check_frictional(const MaterialParams& p) {
+  if (p.dilatancy_angle > p.friction_angle)
+    return {"dilatancy_angle", "expected an angle in [0, friction_angle] degrees"};
+  // 0 means "none" for either key, so a --set can switch one form off.
+  if (p.critical_opening > 0.0 && p.critical_volume_strain > 0.0)
+    return {"critical_opening",
+            "either critical_volume_strain or critical_opening (the crack-band form), not both"};
+  if (p.nonlocal_length > 0.0 && !(p.critical_volume_strain > 0.0))
+    return {"nonlocal_length",
+            "a critical_volume_strain > 0 beside it (the averaged dilation drives that loss; "
+            "critical_opening is the other, crack-band, regularisation)"};
+  return {};
+}
+KeyProblem DruckerPrager::check(const MaterialParams& p) {
+  if (auto problem = check_frictional(p)) return problem;
+  if (p.friction_angle == 0.0 && p.cohesion == 0.0)
+    return {"cohesion", "a Drucker-Prager material needs friction_angle > 0 or cohesion > 0"};
+  return {};
+}
+
 Material make_material(const MaterialParams& p) {
-  const auto k = ElasticConstants::from(p.youngs_modulus, p.poisson_ratio);
-  switch (p.model) {
-    case MaterialModel::LinearElastic:
-      return LinearElastic{k, p.density};
-    case MaterialModel::NeoHookean:
-      return NeoHookean{k, p.density};
-    case MaterialModel::DruckerPrager:
-      return DruckerPrager{k,          p.density,        p.friction_angle,        p.dilatancy_angle,
-                           p.cohesion, p.tension_cutoff, p.critical_volume_strain};
-    case MaterialModel::MohrCoulomb:
-      return MohrCoulomb{
-          k, p.density, p.friction_angle, p.dilatancy_angle, p.cohesion, p.critical_volume_strain};
-    case MaterialModel::NewtonianFluid:
-      break;
-  }
-  return NewtonianFluid{p.bulk_modulus, p.viscosity, p.density};
+  const std::size_t law = MaterialLaws::index_of(p.model);
+  if (law == MaterialLaws::size) throw std::invalid_argument("unknown material model " + p.model);
+  return MaterialLaws::visit(law, [&]<class Law>() { return Material(Law::make(p)); });
 }
 
 double wave_speed(const Material& m) {
@@ -144,9 +179,14 @@ double density(const Material& m) {
   return std::visit([](const auto& model) { return model.density; }, m);
 }
 double initial_cohesion(const MaterialParams& p) {
-  return p.model == MaterialModel::DruckerPrager || p.model == MaterialModel::MohrCoulomb
-             ? p.cohesion
-             : 0.0;
+  const std::size_t law = MaterialLaws::index_of(p.model);
+  if (law == MaterialLaws::size) return 0.0;
+  const bool has_cohesion = MaterialLaws::visit(law, []<class Law>() {
+    for (const auto& key : Law::keys)
+      if (key.field == &MaterialParams::cohesion) return true;
+    return false;
+  });
+  return has_cohesion ? p.cohesion : 0.0;
 }
 
 }  // namespace talus::mpm

@@ -1,28 +1,34 @@
 #pragma once
 // Constitutive models of the material points, one small type each, behind one
 // interface chosen by name: every model has
+//   static constexpr std::string_view name;          // the file's `model`
+//   static constexpr std::array<DeclaredKey<MaterialParams>, N> keys;
+//   static Model make(const MaterialParams&);
+//   static KeyProblem check(const MaterialParams&);  // across keys, after reading
 //   void update(MaterialState&, const Mat3& velocity_gradient, double dt,
 //               double volume_change_over_v0) const;
 //   double wave_speed() const;   // P-wave speed for the time step
-// The solver holds them in a std::variant and dispatches once per material
-// (std::visit outside the particle loop), never per particle.
+// The scenario reader and writer read the name and keys from here
+// (core/declared_keys.hpp); a new model is a new type plus its entry in
+// `Material` below. The solver holds them in a std::variant and dispatches
+// once per material (std::visit outside the particle loop), never per particle.
 // Tension positive; 3x3 tensors also in 2D (plane strain).
+#include <array>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <variant>
 
+#include "talus/core/declared_keys.hpp"
 #include "talus/mpm/tensor.hpp"
 
 namespace talus::mpm {
 
-enum class MaterialModel { LinearElastic, NeoHookean, DruckerPrager, MohrCoulomb, NewtonianFluid };
-
 struct MaterialParams {
   std::string name;
-  MaterialModel model = MaterialModel::LinearElastic;
-  double density = 0.0;         // kg/m^3
-  double youngs_modulus = 0.0;  // Pa (solids)
+  std::string model = "linear_elastic";  // a name from `Material` below
+  double density = 0.0;                  // kg/m^3
+  double youngs_modulus = 0.0;           // Pa (solids)
   double poisson_ratio = 0.0;
   double friction_angle = 0.0;   // rad (Drucker-Prager, Mohr-Coulomb)
   double dilatancy_angle = 0.0;  // rad
@@ -61,8 +67,31 @@ struct ElasticConstants {
   double p_modulus() const { return bulk + 4.0 / 3.0 * shear; }
 };
 
+// The keys of every solid and of the frictional ones.
+using MaterialKey = DeclaredKey<MaterialParams>;
+inline constexpr std::array<MaterialKey, 2> kElasticKeys{
+    required_key("youngs_modulus", &MaterialParams::youngs_modulus, positive()),
+    required_key("poisson_ratio", &MaterialParams::poisson_ratio, between(-1.0, 0.5, true, true))};
+inline constexpr std::array<MaterialKey, 6> kFrictionalKeys{
+    required_key("friction_angle", &MaterialParams::friction_angle, between(0, 90, false, true),
+                 KeyUnit::Degrees),
+    optional_key("dilatancy_angle", &MaterialParams::dilatancy_angle, 0.0,
+                 between(0, 90, false, true), KeyUnit::Degrees),
+    optional_key("cohesion", &MaterialParams::cohesion, 0.0, non_negative()),
+    optional_key("critical_volume_strain", &MaterialParams::critical_volume_strain, 0.0,
+                 non_negative()),
+    optional_key("critical_opening", &MaterialParams::critical_opening, 0.0, non_negative()),
+    optional_key("nonlocal_length", &MaterialParams::nonlocal_length, 0.0, non_negative())};
+// The checks across the frictional keys.
+KeyProblem check_frictional(const MaterialParams& p);
+
 // Hooke's law in rate form with the Jaumann rate (objective rotation first).
 struct LinearElastic {
+  static constexpr std::string_view name = "linear_elastic";
+  static constexpr auto keys = kElasticKeys;
+  static LinearElastic make(const MaterialParams& p);
+  static KeyProblem check(const MaterialParams&) { return {}; }
+
   ElasticConstants k;
   double density;
   void update(MaterialState& s, const Mat3& l, double dt, double dv_over_v0) const;
@@ -71,6 +100,10 @@ struct LinearElastic {
 
 // Compressible Neo-Hookean, sigma = mu/J (B - I) + lambda ln J / J I, from F.
 struct NeoHookean {
+  static constexpr std::string_view name = "neo_hookean";
+  static constexpr auto keys = kElasticKeys;
+  static NeoHookean make(const MaterialParams& p);
+  static KeyProblem check(const MaterialParams&) { return {}; }
   ElasticConstants k;
   double density;
   void update(MaterialState& s, const Mat3& l, double dt, double dv_over_v0) const;
@@ -80,6 +113,13 @@ struct NeoHookean {
 // Drucker-Prager cone fitted to Mohr-Coulomb (Bui et al. 2008, mpm.md):
 // f = sqrt(J2) + alpha I1 - k_c, g = sqrt(J2) + 3 I1 sin(psi).
 struct DruckerPrager {
+  static constexpr std::string_view name = "drucker_prager";
+  static constexpr auto keys = join(join(kElasticKeys, kFrictionalKeys),
+                                    std::array<MaterialKey, 1>{optional_key(
+                                        "tension_cutoff", &MaterialParams::tension_cutoff,
+                                        std::numeric_limits<double>::infinity(), non_negative())});
+  static DruckerPrager make(const MaterialParams& p);
+  static KeyProblem check(const MaterialParams& p);
   ElasticConstants k;
   double density, phi, psi, c0, tension_cutoff, critical_volume_strain;
   static double alpha(double phi);
@@ -98,6 +138,10 @@ struct DruckerPrager {
 // (2008, box 8.5): main plane, the two edges and the apex.
 // f = (s1 - s3) + (s1 + s3) sin(phi) - 2 c cos(phi), s1 >= s2 >= s3.
 struct MohrCoulomb {
+  static constexpr std::string_view name = "mohr_coulomb";
+  static constexpr auto keys = join(kElasticKeys, kFrictionalKeys);
+  static MohrCoulomb make(const MaterialParams& p);
+  static KeyProblem check(const MaterialParams& p) { return check_frictional(p); }
   ElasticConstants k;
   double density, phi, psi, c0, critical_volume_strain;
   double yield(const Mat3& stress, double cohesion) const;
@@ -111,21 +155,30 @@ struct MohrCoulomb {
 // Weakly compressible Newtonian fluid: sigma = -p I + 2 eta dev(D), with the
 // pressure from the volume change (rate form, dp = -K tr(dEps)).
 struct NewtonianFluid {
+  static constexpr std::string_view name = "newtonian_fluid";
+  static constexpr std::array<MaterialKey, 2> keys{
+      required_key("bulk_modulus", &MaterialParams::bulk_modulus, positive()),
+      optional_key("viscosity", &MaterialParams::viscosity, 0.0, non_negative())};
+  static NewtonianFluid make(const MaterialParams& p);
+  static KeyProblem check(const MaterialParams&) { return {}; }
   double bulk, viscosity, density;
   void update(MaterialState& s, const Mat3& l, double dt, double dv_over_v0) const;
   double wave_speed() const;
 };
 
-using Material =
-    std::variant<LinearElastic, NeoHookean, DruckerPrager, MohrCoulomb, NewtonianFluid>;
+// The models a scenario may name, in the order messages list them: one entry
+// per model.
+using MaterialLaws = LawList<MohrCoulomb, DruckerPrager, LinearElastic, NeoHookean, NewtonianFluid>;
+using Material = MaterialLaws::Variant;
 
+// The model p.model names (which must be one of MaterialLaws).
 Material make_material(const MaterialParams& p);
 // The critical volume strain on a grid of cell size h (from critical_opening
 // when it is set).
 double critical_volume_strain(const MaterialParams& p, double cell_size);
 double wave_speed(const Material& m);
 double density(const Material& m);
-// Initial cohesion c0 (0 for models without one).
+// Initial cohesion c0 (0 for models without one: they do not read it).
 double initial_cohesion(const MaterialParams& p);
 
 // Cohesion loss of van den Bout et al. (2021) eq. 26 (mpm.md): while yielding,

@@ -11,6 +11,9 @@
 #include <system_error>
 
 #include "talus/core/error.hpp"
+#include "talus/dem/contact/laws.hpp"
+#include "talus/dem/membrane/contact.hpp"
+#include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io {
@@ -63,7 +66,9 @@ dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
 // Everything in [contact] except the pairs, which need the material names.
 dem::ContactParams read_contact(TomlReader& r) {
   dem::ContactParams c;
-  c.model = r.enumeration("model", detail::kContactModels, c.model);
+  const auto law = r.enumeration("model", detail::law_names<dem::ContactLaws>(),
+                                 dem::ContactLaws::index_of(c.model));
+  c.model = dem::ContactLaws::names[law];
   c.rolling = r.enumeration("rolling", detail::kRollingModels, c.rolling);
   c.friction_rule = r.enumeration("friction_rule", detail::kPairRules, c.friction_rule);
   c.lock_rotation = r.boolean("lock_rotation", c.lock_rotation);
@@ -278,12 +283,14 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
               "[dam_break.release]) is needed");
   for (TomlReader& r : sources) s.sources.push_back(detail::read_source(r, ctx));
   std::vector<TomlReader> membranes = root.tables("membranes");
-  // Grain-membrane contacts are Hertzian (membrane/contact.hpp): the linear
-  // model's materials need not have a Young's modulus.
-  if (!membranes.empty() && s.contact.model == dem::ContactModel::Linear)
+  // Grain-membrane contacts have one law (membrane/contact.hpp); the run's
+  // contact law must be that one, so that no contact silently uses another.
+  using MembraneLaw = dem::membrane::ContactLaw;
+  if (!membranes.empty() && s.contact.model != MembraneLaw::name)
     membranes[0].fail("material",
-                      "grain-membrane contacts use the Hertz law: membranes need contact.model "
-                      "= \"hertz_mindlin\" or \"viscoelastic_hertz\"");
+                      fmt::format("grain-membrane contacts use the '{}' law: membranes need "
+                                  "contact.model = \"{}\" (got \"{}\")",
+                                  MembraneLaw::name, MembraneLaw::name, s.contact.model));
   for (std::size_t i = 0; i < membranes.size(); ++i) {
     auto m = detail::read_membrane(membranes[i], i, ctx);
     detail::check_unique_name(

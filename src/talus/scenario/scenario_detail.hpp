@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "talus/core/declared_keys.hpp"
 #include "talus/dem/params.hpp"
 #include "talus/io/toml_reader.hpp"
 
@@ -22,10 +23,6 @@ namespace talus::io::detail {
 
 // The file's names of the enumerated options; the first one is listed first
 // in messages, the writer maps values back to these names.
-inline const EnumNames<dem::ContactModel> kContactModels = {
-    {"linear", dem::ContactModel::Linear},
-    {"hertz_mindlin", dem::ContactModel::HertzMindlin},
-    {"viscoelastic_hertz", dem::ContactModel::ViscoelasticHertz}};
 inline const EnumNames<dem::RollingModel> kRollingModels = {{"none", dem::RollingModel::None},
                                                             {"epsd", dem::RollingModel::Epsd},
                                                             {"kuen", dem::RollingModel::Kuen}};
@@ -86,17 +83,14 @@ struct DemContext {
   std::vector<std::string> wall_names;  // filled once [[walls]] are read
 };
 
-// An interval a number must lie in, and how to say so in a message.
-struct Interval {
-  double low = -std::numeric_limits<double>::infinity();
-  double high = std::numeric_limits<double>::infinity();
-  bool low_open = false, high_open = false;
-  bool contains(double x) const;
-  std::string describe() const;  // "a positive number", "a number in (0, 1]"
-};
-Interval positive();
-Interval non_negative();
-Interval between(double low, double high, bool low_open, bool high_open);
+// Intervals come from the laws' declarations (core/declared_keys.hpp).
+using talus::between;
+using talus::Interval;
+using talus::non_negative;
+using talus::positive;
+// How a message says which numbers an interval holds: "a positive number",
+// "a number in (0, 1]".
+std::string describe(const Interval& range);
 
 std::optional<double> optional_number_in(TomlReader& r, std::string_view key, Interval range);
 double number_in(TomlReader& r, std::string_view key, double fallback, Interval range);
@@ -121,8 +115,9 @@ void check_material(const TomlReader& r, std::string_view key, const std::string
 Vec3 up(const DemContext& ctx);
 
 // The parts of parse_dem_scenario, one per table.
+// Each material reads the keys of the named contact law (dem/contact/laws.hpp).
 std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers,
-                                                dem::ContactModel model);
+                                                const std::string& contact_model);
 std::vector<dem::PairOverride> read_pairs(TomlReader& contact, const DemContext& ctx);
 dem::WallParams read_wall(TomlReader& r, std::size_t index, const DemContext& ctx);
 dem::ParticleSourceParams read_source(TomlReader& r, const DemContext& ctx);

@@ -4,35 +4,56 @@
 #include <algorithm>
 #include <cmath>
 
+#include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
 
-bool Interval::contains(double x) const {
-  const bool above = low_open ? x > low : x >= low;
-  const bool below = high_open ? x < high : x <= high;
-  return above && below;
-}
-
-std::string Interval::describe() const {
-  if (std::isinf(high)) {
-    if (low == 0.0) return low_open ? "a positive number" : "a number >= 0";
-    return fmt::format("a number {} {}", low_open ? ">" : ">=", low);
+std::string describe(const Interval& range) {
+  if (std::isinf(range.high)) {
+    if (range.low == 0.0) return range.low_open ? "a positive number" : "a number >= 0";
+    return fmt::format("a number {} {}", range.low_open ? ">" : ">=", range.low);
   }
-  return fmt::format("a number in {}{}, {}{}", low_open ? "(" : "[", low, high,
-                     high_open ? ")" : "]");
+  return fmt::format("a number in {}{}, {}{}", range.low_open ? "(" : "[", range.low, range.high,
+                     range.high_open ? ")" : "]");
 }
 
-Interval positive() { return {0.0, std::numeric_limits<double>::infinity(), true, true}; }
-Interval non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, true}; }
-Interval between(double low, double high, bool low_open, bool high_open) {
-  return {low, high, low_open, high_open};
+std::string describe_key(const Interval& range, KeyUnit unit) {
+  std::string text = describe(range);
+  if (unit == KeyUnit::Plain) return text;
+  // "a number in [0, 90)" -> "an angle in [0, 90) degrees"
+  if (text.starts_with("a number")) text = "an angle" + text.substr(8);
+  return text + " degrees";
+}
+
+double to_stored(double value, KeyUnit unit) {
+  switch (unit) {
+    case KeyUnit::Plain:
+      return value;
+    case KeyUnit::Degrees:
+      return deg2rad(value);
+    case KeyUnit::TanOfDegrees:
+      return std::tan(deg2rad(value));
+  }
+  return value;
+}
+
+double to_file(double value, KeyUnit unit) {
+  switch (unit) {
+    case KeyUnit::Plain:
+      return value;
+    case KeyUnit::Degrees:
+      return rad2deg(value);
+    case KeyUnit::TanOfDegrees:
+      return rad2deg(std::atan(value));
+  }
+  return value;
 }
 
 std::optional<double> optional_number_in(TomlReader& r, std::string_view key, Interval range) {
-  if (r.has(key) && !r.is_number(key)) r.expect(false, key, range.describe());
+  if (r.has(key) && !r.is_number(key)) r.expect(false, key, describe(range));
   const auto value = r.optional_number(key);
-  if (value) r.expect(range.contains(*value), key, range.describe());
+  if (value) r.expect(range.contains(*value), key, describe(range));
   return value;
 }
 
@@ -42,7 +63,7 @@ double number_in(TomlReader& r, std::string_view key, double fallback, Interval 
 
 double required_number_in(TomlReader& r, std::string_view key, Interval range) {
   if (auto value = optional_number_in(r, key, range)) return *value;
-  r.missing(key, fmt::format("missing (expected {})", range.describe()));
+  r.missing(key, fmt::format("missing (expected {})", describe(range)));
 }
 
 namespace {

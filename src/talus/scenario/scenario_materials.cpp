@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "talus/dem/contact/laws.hpp"
+#include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io::detail {
@@ -21,48 +23,23 @@ std::optional<double> read_friction(TomlReader& r, std::string_view key,
   return mu;
 }
 
-void require(TomlReader& r, std::string_view key, bool present, dem::ContactModel model,
-             std::string_view expected) {
-  if (present) return;
-  r.missing(key, fmt::format("missing: contact.model = \"{}\" needs it (expected {})",
-                             name_of(kContactModels, model), expected));
-}
-
-dem::MaterialParams read_material(TomlReader& r, dem::ContactModel model) {
-  using dem::ContactModel;
+// The keys every material has, then those of the contact law (which declares
+// them); other laws' keys are read too when present, so that a --set may
+// switch the law.
+dem::MaterialParams read_material(TomlReader& r, const std::string& contact_model) {
+  using Laws = dem::ContactLaws;
   dem::MaterialParams m;
   m.name = r.required_string("name");
   r.expect(!m.name.empty(), "name", "a non-empty name");
   // Density is needed only by materials that particles use; the caller checks.
   m.density = number_in(r, "density", 0.0, positive());
-
-  const auto youngs = optional_number_in(r, "youngs_modulus", positive());
-  const bool hertz = model != ContactModel::Linear;
-  if (hertz) require(r, "youngs_modulus", youngs.has_value(), model, "a positive number, Pa");
-  m.youngs_modulus = youngs.value_or(0.0);
-  m.poisson_ratio = number_in(r, "poisson_ratio", m.poisson_ratio, between(-1.0, 0.5, true, true));
-  const auto restitution = optional_number_in(r, "restitution", between(0.0, 1.0, true, false));
-  if (model == ContactModel::HertzMindlin) {
-    require(r, "restitution", restitution.has_value(), model, "a number in (0, 1]");
-  }
-  m.restitution = restitution.value_or(m.restitution);
-
   const auto friction = read_friction(r, "friction", "friction_angle");
   if (!friction) {
     r.missing("friction", "missing (expected 'friction' >= 0 or 'friction_angle' in degrees)");
   }
   m.friction = *friction;
   m.rolling_friction = number_in(r, "rolling_friction", 0.0, non_negative());
-
-  const auto kn = optional_number_in(r, "normal_stiffness", positive());
-  if (model == ContactModel::Linear) {
-    require(r, "normal_stiffness", kn.has_value(), model, "a positive number, N/m");
-  }
-  m.normal_stiffness = kn.value_or(0.0);
-  // PFC practice (and Kuen's set): k_s = k_n unless given.
-  m.shear_stiffness = number_in(r, "shear_stiffness", m.normal_stiffness, non_negative());
-  m.damping_ratio = number_in(r, "damping_ratio", 0.0, between(0.0, 1.0, false, true));
-  m.dissipation = number_in(r, "dissipation", 0.0, non_negative());
+  read_law<Laws>(r, Laws::index_of(contact_model), m, "contact.model", OtherLaws::Accept);
   r.finish();
   return m;
 }
@@ -70,10 +47,10 @@ dem::MaterialParams read_material(TomlReader& r, dem::ContactModel model) {
 }  // namespace
 
 std::vector<dem::MaterialParams> read_materials(std::vector<TomlReader>& readers,
-                                                dem::ContactModel model) {
+                                                const std::string& contact_model) {
   std::vector<dem::MaterialParams> materials;
   for (std::size_t i = 0; i < readers.size(); ++i) {
-    auto m = read_material(readers[i], model);
+    auto m = read_material(readers[i], contact_model);
     check_unique_name(readers[i], materials, m.name, "material", "defined",
                       [&](std::size_t j) { return fmt::format("at line {}", readers[j].line()); });
     materials.push_back(std::move(m));

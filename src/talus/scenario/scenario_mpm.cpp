@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "talus/geometry/oriented_box.hpp"
+#include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 #include "talus/scenario/scenario_mpm_membranes.hpp"
 
@@ -19,7 +20,6 @@ using detail::number_in;
 using detail::positive;
 using detail::required_number_in;
 using mpm::BoundaryKind;
-using mpm::MaterialModel;
 
 const EnumNames<mpm::ShapeKind> kShapes = {{"gimp", mpm::ShapeKind::Gimp},
                                            {"linear", mpm::ShapeKind::Linear},
@@ -27,11 +27,6 @@ const EnumNames<mpm::ShapeKind> kShapes = {{"gimp", mpm::ShapeKind::Gimp},
 const EnumNames<mpm::Scheme> kSchemes = {{"musl", mpm::Scheme::Musl}, {"usl", mpm::Scheme::Usl}};
 const EnumNames<BoundaryKind> kFaces = {
     {"roller", BoundaryKind::Roller}, {"fixed", BoundaryKind::Fixed}, {"free", BoundaryKind::Free}};
-const EnumNames<MaterialModel> kModels = {{"mohr_coulomb", MaterialModel::MohrCoulomb},
-                                          {"drucker_prager", MaterialModel::DruckerPrager},
-                                          {"linear_elastic", MaterialModel::LinearElastic},
-                                          {"neo_hookean", MaterialModel::NeoHookean},
-                                          {"newtonian_fluid", MaterialModel::NewtonianFluid}};
 const EnumNames<int> kInitialStress = {{"none", 0}, {"geostatic", 1}};
 const char* kFaceKeys[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
 
@@ -96,54 +91,15 @@ void read_grid(TomlReader& r, mpm::MpmScenario& s, const DemContext& ctx) {
   r.finish();
 }
 
+// A material: its model's keys as the model declares them (mpm/materials.hpp).
 mpm::MaterialParams read_material(TomlReader& r) {
+  using Laws = mpm::MaterialLaws;
   mpm::MaterialParams m;
   m.name = r.required_string("name");
-  m.model = r.required_enum("model", kModels);
+  const std::size_t law = r.required_enum("model", detail::law_names<Laws>());
+  m.model = Laws::names[law];
   m.density = required_number_in(r, "density", positive());
-  const bool fluid = m.model == MaterialModel::NewtonianFluid;
-  const bool frictional =
-      m.model == MaterialModel::MohrCoulomb || m.model == MaterialModel::DruckerPrager;
-  const std::string model = r.required_string("model");
-  if (fluid) {
-    m.bulk_modulus = required_number_in(r, "bulk_modulus", positive());
-    m.viscosity = number_in(r, "viscosity", 0.0, non_negative());
-    r.reject({"youngs_modulus", "poisson_ratio"}, "is not used by model '" + model + "'");
-  } else {
-    m.youngs_modulus = required_number_in(r, "youngs_modulus", positive());
-    m.poisson_ratio = required_number_in(r, "poisson_ratio", between(-1.0, 0.5, true, true));
-    r.reject({"bulk_modulus", "viscosity"}, "is not used by model '" + model + "'");
-  }
-  if (frictional) {
-    m.friction_angle = r.required_angle("friction_angle");
-    r.expect(m.friction_angle >= 0.0 && m.friction_angle < M_PI / 2, "friction_angle",
-             "an angle in [0, 90) degrees");
-    m.dilatancy_angle = r.angle("dilatancy_angle", 0.0);
-    r.expect(m.dilatancy_angle >= 0.0 && m.dilatancy_angle <= m.friction_angle, "dilatancy_angle",
-             "an angle in [0, friction_angle] degrees");
-    m.cohesion = number_in(r, "cohesion", 0.0, non_negative());
-    m.critical_volume_strain = number_in(r, "critical_volume_strain", 0.0, non_negative());
-    m.critical_opening = number_in(r, "critical_opening", 0.0, non_negative());
-    // 0 means "none" for either key, so a --set can switch one form off.
-    if (m.critical_opening > 0.0 && m.critical_volume_strain > 0.0)
-      r.fail("critical_opening",
-             "either critical_volume_strain or critical_opening (the crack-band form), not both");
-    m.nonlocal_length = number_in(r, "nonlocal_length", 0.0, non_negative());
-    if (m.nonlocal_length > 0.0 && !(m.critical_volume_strain > 0.0))
-      r.fail("nonlocal_length",
-             "a critical_volume_strain > 0 beside it (the averaged dilation drives that loss; "
-             "critical_opening is the other, crack-band, regularisation)");
-    if (m.model == MaterialModel::DruckerPrager)
-      m.tension_cutoff = number_in(r, "tension_cutoff", m.tension_cutoff, non_negative());
-    else
-      r.reject({"tension_cutoff"}, "is not used by model 'mohr_coulomb' (its apex is the cut-off)");
-    if (m.friction_angle == 0.0 && m.model == MaterialModel::DruckerPrager && m.cohesion == 0.0)
-      r.fail("cohesion", "a Drucker-Prager material needs friction_angle > 0 or cohesion > 0");
-  } else {
-    r.reject({"friction_angle", "dilatancy_angle", "cohesion", "critical_volume_strain",
-              "critical_opening", "nonlocal_length", "tension_cutoff"},
-             "is not used by model '" + model + "'");
-  }
+  detail::read_law<Laws>(r, law, m, "model", detail::OtherLaws::Refuse);
   r.finish();
   return m;
 }
@@ -401,26 +357,8 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
             {"boundaries", faces}};
   J materials = J::array();
   for (const auto& m : s.materials) {
-    J j = {{"name", m.name}, {"model", detail::name_of(kModels, m.model)}, {"density", m.density}};
-    if (m.model == MaterialModel::NewtonianFluid) {
-      j["bulk_modulus"] = m.bulk_modulus;
-      j["viscosity"] = m.viscosity;
-    } else {
-      j["youngs_modulus"] = m.youngs_modulus;
-      j["poisson_ratio"] = m.poisson_ratio;
-    }
-    if (m.model == MaterialModel::MohrCoulomb || m.model == MaterialModel::DruckerPrager) {
-      j["friction_angle"] = rad2deg(m.friction_angle);
-      j["dilatancy_angle"] = rad2deg(m.dilatancy_angle);
-      j["cohesion"] = m.cohesion;
-      if (m.critical_opening > 0.0)
-        j["critical_opening"] = m.critical_opening;
-      else
-        j["critical_volume_strain"] = m.critical_volume_strain;
-      if (m.nonlocal_length > 0.0) j["nonlocal_length"] = m.nonlocal_length;
-      if (m.model == MaterialModel::DruckerPrager && std::isfinite(m.tension_cutoff))
-        j["tension_cutoff"] = m.tension_cutoff;
-    }
+    J j = {{"name", m.name}, {"model", m.model}, {"density", m.density}};
+    detail::write_law<mpm::MaterialLaws>(j, mpm::MaterialLaws::index_of(m.model), m);
     materials.push_back(j);
   }
   J bodies = J::array();

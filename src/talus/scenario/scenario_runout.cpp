@@ -12,6 +12,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/raster.hpp"
+#include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 
 namespace talus::io {
@@ -25,7 +26,6 @@ using detail::required_number_in;
 using runout::EarthPressureMode;
 using runout::PathKind;
 using runout::ReleaseKind;
-using runout::RheologyKind;
 
 const std::vector<std::string_view> kTopLevelKeys = {
     "method",         "name",      "description", "run",    "path",   "material",
@@ -38,8 +38,6 @@ const EnumNames<GridBoundary> kBoundaries = {{"wall", GridBoundary::Wall},
 const EnumNames<PathKind> kPathKinds = {{"flume", PathKind::Flume}, {"profile", PathKind::Profile}};
 const EnumNames<ReleaseKind> kReleaseKinds = {{"flume", ReleaseKind::Flume},
                                               {"polygon", ReleaseKind::Polygon}};
-const EnumNames<RheologyKind> kRheologies = {{"frictional", RheologyKind::Frictional},
-                                             {"voellmy", RheologyKind::Voellmy}};
 const EnumNames<EarthPressureMode> kPressureModes = {
     {"hungr", EarthPressureMode::Hungr},
     {"savage_hutter", EarthPressureMode::SavageHutter},
@@ -106,19 +104,9 @@ void read_material(TomlReader& r, runout::DanParams& d) {
   r.expect(phi_i > 0 && phi_i < M_PI / 2, "internal_friction", "an angle in (0, 90) degrees");
   d.pressure.phi_internal = phi_i;
   auto& rh = d.rheology;
-  rh.kind = r.enumeration("rheology", kRheologies, RheologyKind::Frictional);
-  if (rh.kind == RheologyKind::Frictional) {
-    r.reject({"friction_coefficient", "turbulence"}, "is not used by the 'frictional' rheology");
-    const double phi_b = r.required_angle("basal_friction");
-    r.expect(phi_b >= 0 && phi_b < M_PI / 2, "basal_friction", "an angle in [0, 90) degrees");
-    rh.tan_friction = std::tan(phi_b);
-    rh.pore_pressure_ratio =
-        number_in(r, "pore_pressure_ratio", 0.0, between(0.0, 1.0, false, true));
-  } else {
-    r.reject({"basal_friction", "pore_pressure_ratio"}, "is not used by the 'voellmy' rheology");
-    rh.tan_friction = required_number_in(r, "friction_coefficient", non_negative());
-    rh.turbulence = required_number_in(r, "turbulence", positive());
-  }
+  using Laws = runout::RheologyLaws;
+  rh.law = r.enumeration("rheology", detail::law_names<Laws>(), std::size_t{0});
+  detail::read_law<Laws>(r, rh.law, rh, "rheology", detail::OtherLaws::Refuse);
   d.pressure.tan_phi_basal = rh.tan_friction;
   r.finish();
 }
@@ -407,14 +395,8 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
   }
   Json material = {{"density", p.density},
                    {"internal_friction", deg(p.pressure.phi_internal)},
-                   {"rheology", detail::name_of(kRheologies, p.rheology.kind)}};
-  if (p.rheology.kind == RheologyKind::Frictional) {
-    material["basal_friction"] = deg(std::atan(p.rheology.tan_friction));
-    material["pore_pressure_ratio"] = p.rheology.pore_pressure_ratio;
-  } else {
-    material["friction_coefficient"] = p.rheology.tan_friction;
-    material["turbulence"] = p.rheology.turbulence;
-  }
+                   {"rheology", runout::RheologyLaws::names[p.rheology.law]}};
+  detail::write_law<runout::RheologyLaws>(material, p.rheology.law, p.rheology);
   Json pressure = {{"model", detail::name_of(kPressureModes, p.pressure.mode)}};
   if (p.pressure.mode == EarthPressureMode::Constant) {
     pressure["k"] = p.pressure.constant;

@@ -4,6 +4,8 @@
 // ordered JSON object so that the keys keep the order of the documentation.
 #include <cmath>
 
+#include "talus/dem/contact/laws.hpp"
+#include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 
@@ -54,7 +56,7 @@ class Writer {
   }
 
   static Json contact(const dem::ContactParams& c) {
-    Json t{{"model", name_of(detail::kContactModels, c.model)},
+    Json t{{"model", c.model},
            {"rolling", name_of(detail::kRollingModels, c.rolling)},
            {"friction_rule", name_of(detail::kPairRules, c.friction_rule)},
            {"lock_rotation", c.lock_rotation},
@@ -78,19 +80,14 @@ class Writer {
     return t;
   }
 
-  static Json material(const dem::MaterialParams& m) {
+  // The keys every material has, then those the contact law declares.
+  static Json material(const dem::MaterialParams& m, const std::string& contact_model) {
     Json t{{"name", m.name}};
-    // Zero means "not given" for these; they are optional for some models.
+    // Zero means "not given": only materials that particles use need one.
     if (m.density > 0.0) t["density"] = m.density;
-    if (m.youngs_modulus > 0.0) t["youngs_modulus"] = m.youngs_modulus;
-    t["poisson_ratio"] = m.poisson_ratio;
-    t["restitution"] = m.restitution;
     t["friction"] = m.friction;
     t["rolling_friction"] = m.rolling_friction;
-    if (m.normal_stiffness > 0.0) t["normal_stiffness"] = m.normal_stiffness;
-    t["shear_stiffness"] = m.shear_stiffness;
-    t["damping_ratio"] = m.damping_ratio;
-    t["dissipation"] = m.dissipation;
+    detail::write_law<dem::ContactLaws>(t, dem::ContactLaws::index_of(contact_model), m);
     return t;
   }
 
@@ -287,7 +284,7 @@ Json scenario_table(const dem::DemScenario& s) {
   doc["run"] = w.run(s.run);
   doc["contact"] = Writer::contact(s.contact);
   Json materials = Json::array(), walls = Json::array(), sources = Json::array();
-  for (const auto& m : s.materials) materials.push_back(Writer::material(m));
+  for (const auto& m : s.materials) materials.push_back(Writer::material(m, s.contact.model));
   // What [flume] generates is written as [flume], not as walls and particles.
   for (const auto& wall : s.walls) {
     if (!wall.generated) walls.push_back(w.wall(wall));

@@ -4,8 +4,11 @@
 // `pair_style gran model hertz tangential history` (the peer benchmark's
 // reference definition, ../shared/peers/README.md §1).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string_view>
 
+#include "talus/core/declared_keys.hpp"
 #include "talus/dem/contact/kinematics.hpp"
 #include "talus/dem/contact/pair_coefficients.hpp"
 
@@ -29,8 +32,18 @@ inline double hertz_critical_time_step(double e_star, double r_eff, double m_eff
   return std::sqrt(m_eff / k);
 }
 
+// The keys of [[materials]] both Hertz laws need.
+inline constexpr std::array<DeclaredKey<MaterialParams>, 2> kHertzKeys{
+    required_key("youngs_modulus", &MaterialParams::youngs_modulus, positive()),
+    optional_key("poisson_ratio", &MaterialParams::poisson_ratio, 0.3,
+                 between(-1.0, 0.5, true, true))};
+
 struct HertzMindlin {
-  static constexpr const char* name = "hertz_mindlin";
+  static constexpr std::string_view name = "hertz_mindlin";
+  static constexpr auto keys = join(
+      kHertzKeys, std::array<DeclaredKey<MaterialParams>, 1>{required_key(
+                      "restitution", &MaterialParams::restitution, between(0, 1, true, false))});
+  static KeyProblem check(const MaterialParams&) { return {}; }
   struct Coeffs {
     HertzConstants h;
     double beta = 0;  // ln e / sqrt(ln^2 e + pi^2), negative
@@ -87,7 +100,11 @@ struct HertzMindlin {
 // prefactor 2E sqrt(R)/(3(1-nu^2)) = (4/3) E* sqrt(R); k_t = (32/3) G* sqrt(R xi)
 // likewise equals the source's 8E/(3(1+nu)(2-nu)) sqrt(R xi) for equal spheres.
 struct ViscoelasticHertz {
-  static constexpr const char* name = "viscoelastic_hertz";
+  static constexpr std::string_view name = "viscoelastic_hertz";
+  static constexpr auto keys =
+      join(kHertzKeys, std::array<DeclaredKey<MaterialParams>, 1>{optional_key(
+                           "dissipation", &MaterialParams::dissipation, 0.0, non_negative())});
+  static KeyProblem check(const MaterialParams&) { return {}; }
   struct Coeffs {
     HertzConstants h;
     double dissipation = 0;  // A [s]

@@ -4,15 +4,27 @@
 // damping ratio beta so that the restitution does not depend on the stiffness:
 // e = exp(-pi beta / sqrt(1 - beta^2)) when the dashpot may pull (the default).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string_view>
 
+#include "talus/core/declared_keys.hpp"
 #include "talus/dem/contact/kinematics.hpp"
 #include "talus/dem/contact/pair_coefficients.hpp"
 
 namespace talus::dem {
 
 struct LinearSpringDashpot {
-  static constexpr const char* name = "linear";
+  static constexpr std::string_view name = "linear";
+  // The keys of [[materials]] this law needs (PFC practice and Kuen's set:
+  // k_s = k_n unless given).
+  static constexpr std::array<DeclaredKey<MaterialParams>, 3> keys{
+      required_key("normal_stiffness", &MaterialParams::normal_stiffness, positive()),
+      DeclaredKey<MaterialParams>{"shear_stiffness", &MaterialParams::shear_stiffness, false, 0.0,
+                                  non_negative(), KeyUnit::Plain, "normal_stiffness"},
+      optional_key("damping_ratio", &MaterialParams::damping_ratio, 0.0,
+                   between(0.0, 1.0, false, true))};
+  static KeyProblem check(const MaterialParams&) { return {}; }
   struct Coeffs {
     double kn = 0, ks = 0, beta = 0, mu = 0;
     bool may_pull = true;

@@ -205,7 +205,7 @@ GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                           std::span<const Vec3> v_mem, AddReaction&& add_reaction,
                           EffectiveMass&& m_eff, int64_t grain_id, const Grain& g,
                           std::span<const TriangleContact> contacts,
-                          const ViscoelasticHertz::Coeffs& coeffs, double dt, ContactMemory& memory,
+                          const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory,
                           int lane) {
   GrainForce out;
   if (contacts.empty()) return out;
@@ -235,7 +235,7 @@ GrainForce contact_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
     kin.vt = vrel - kin.vn * kin.n - (arm * g.w).cross(kin.n);
     kin.w_rel = g.w;
     ContactForce<3> cf;
-    ViscoelasticHertz::compute<3>(coeffs, kin, springs[k], dt, cf);
+    ContactLaw::compute<3>(coeffs, kin, springs[k], dt, cf);
     const Vec3 f = cf.fn * kin.n + cf.ft;
     out.force += f;
     out.torque += arm * (-kin.n.cross(cf.ft));
@@ -252,7 +252,7 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  std::span<const Vec3> v_mem, std::span<Vec3> f_mem,
                                  int64_t grain_id, const Grain& g,
                                  std::span<const TriangleContact> contacts,
-                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                 const ContactLaw::Coeffs& coeffs, double dt,
                                  ContactMemory& memory) {
   return contact_forces(
       mesh, x_mem, v_mem, [&](int v, const Vec3& f) { f_mem[v] += f; },
@@ -263,8 +263,8 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  std::span<const Vec3> v_mem,
                                  std::vector<std::pair<int, Vec3>>& reactions, int64_t grain_id,
                                  const Grain& g, std::span<const TriangleContact> contacts,
-                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                                 ContactMemory& memory, int lane) {
+                                 const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory,
+                                 int lane) {
   return contact_forces(
       mesh, x_mem, v_mem, [&](int v, const Vec3& f) { reactions.emplace_back(v, f); },
       [&](const TriangleContact&) { return g.mass; }, grain_id, g, contacts, coeffs, dt, memory,
@@ -275,8 +275,7 @@ GrainForce rigid_sphere_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                std::span<const Vec3> v_mem, std::span<const double> mass,
                                std::span<Vec3> f_mem, int64_t sphere_id, const Grain& g,
                                std::span<const TriangleContact> contacts,
-                               const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                               ContactMemory& memory) {
+                               const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory) {
   auto m_point = [&](const TriangleContact& c) {
     const auto& tri = mesh.triangles[c.triangle];
     double inv = 0.0;
@@ -291,8 +290,7 @@ GrainForce rigid_sphere_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
 int particle_triangle_forces(const Mesh& mesh, std::span<const Vec3> x, std::span<const Vec3> v,
                              std::span<const double> mass, std::span<Vec3> f, int particle,
                              double radius, std::span<const TriangleContact> contacts,
-                             const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                             ContactMemory& memory) {
+                             const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory) {
   const Grain g{x[particle], v[particle], Vec3::Zero(), radius, mass[particle]};
   auto m_eff = [&](const TriangleContact& c) {
     const auto& tri = mesh.triangles[c.triangle];

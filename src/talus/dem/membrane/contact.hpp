@@ -21,6 +21,11 @@
 
 namespace talus::dem::membrane {
 
+// The law of every grain-membrane, membrane-membrane and sphere-membrane
+// contact (Götz 2024: the viscoelastic Hertz law for walls and membranes
+// alike). The scenario reader requires [contact] model to name it.
+using ContactLaw = ViscoelasticHertz;
+
 // The value is the priority of Götz Table 1.
 enum class Feature : uint8_t { Vertex = 1, Edge = 2, Face = 3 };
 
@@ -136,7 +141,7 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  std::span<const Vec3> v_mem, std::span<Vec3> f_mem,
                                  int64_t grain_id, const Grain& g,
                                  std::span<const TriangleContact> contacts,
-                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                 const ContactLaw::Coeffs& coeffs, double dt,
                                  ContactMemory& memory);
 // The same for one lane of a multi-threaded pass: the reactions are appended
 // to `reactions` as (vertex, force) for the caller to add in a fixed order.
@@ -144,8 +149,8 @@ GrainForce grain_membrane_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                  std::span<const Vec3> v_mem,
                                  std::vector<std::pair<int, Vec3>>& reactions, int64_t grain_id,
                                  const Grain& g, std::span<const TriangleContact> contacts,
-                                 const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                                 ContactMemory& memory, int lane);
+                                 const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory,
+                                 int lane);
 
 // A sphere of prescribed motion (driven_sphere.hpp) against the selected
 // triangles: the grain-membrane law with m_eff the mass of the contact point
@@ -155,8 +160,7 @@ GrainForce rigid_sphere_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
                                std::span<const Vec3> v_mem, std::span<const double> mass,
                                std::span<Vec3> f_mem, int64_t sphere_id, const Grain& g,
                                std::span<const TriangleContact> contacts,
-                               const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                               ContactMemory& memory);
+                               const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory);
 
 // A particle of the membrane itself (self_contact.hpp) against the selected
 // triangles: the same law, with the particle as a sphere of `radius` that does
@@ -168,8 +172,7 @@ GrainForce rigid_sphere_forces(const Mesh& mesh, std::span<const Vec3> x_mem,
 int particle_triangle_forces(const Mesh& mesh, std::span<const Vec3> x, std::span<const Vec3> v,
                              std::span<const double> mass, std::span<Vec3> f, int particle,
                              double radius, std::span<const TriangleContact> contacts,
-                             const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                             ContactMemory& memory);
+                             const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory);
 
 // Candidate triangles near spheres: a uniform grid of triangle bounding boxes,
 // rebuilt whenever the membrane has moved (cheap: one pass over the triangles).

@@ -19,7 +19,7 @@ Vec3 velocity_at(const DrivenSphere& o, double t) {
 
 GrainForce driven_sphere_forces(const DrivenSphere& o, Membrane& m,
                                 std::span<const TriangleContact> contacts,
-                                const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                                const ContactLaw::Coeffs& coeffs, double dt,
                                 ContactMemory& memory) {
   // The sphere does not spin; its mass plays no part (rigid_sphere_forces).
   const Grain g{o.x, o.v, Vec3::Zero(), o.radius, 0.0};

@@ -47,7 +47,6 @@ Vec3 velocity_at(const DrivenSphere& o, double t);
 // (the sphere is as if infinitely heavy). `memory` needs its begin_step().
 GrainForce driven_sphere_forces(const DrivenSphere& o, Membrane& m,
                                 std::span<const TriangleContact> contacts,
-                                const ViscoelasticHertz::Coeffs& coeffs, double dt,
-                                ContactMemory& memory);
+                                const ContactLaw::Coeffs& coeffs, double dt, ContactMemory& memory);
 
 }  // namespace talus::dem::membrane

@@ -11,13 +11,13 @@ MembraneStep::MembraneStep(const DemSystem<3>& s) {
   for (const auto& grain : mats)
     for (const auto& m : s.membranes) {
       const auto& wall = mats[m.material];
-      coeffs_.push_back(ViscoelasticHertz::make(s.contact, grain, wall,
-                                                pair_coefficients(s.contact, grain, wall)));
+      coeffs_.push_back(
+          ContactLaw::make(s.contact, grain, wall, pair_coefficients(s.contact, grain, wall)));
     }
   for (const auto& m : s.membranes) {
     const auto& wall = mats[m.material];
     self_coeffs_.push_back(
-        ViscoelasticHertz::make(s.contact, wall, wall, pair_coefficients(s.contact, wall, wall)));
+        ContactLaw::make(s.contact, wall, wall, pair_coefficients(s.contact, wall, wall)));
     self_exclusion_.push_back(m.self_contact ? self_contact_exclusion(m.body.mesh)
                                              : SelfExclusion{});
   }
@@ -228,19 +228,19 @@ double MembraneStep::contact_time_step(const DemSystem<3>& s, std::span<const do
     for (std::size_t a = 0; a < m_min.size(); ++a) {
       if (m_min[a] >= 1e300) continue;
       const double me = mv >= 1e300 ? m_min[a] : m_min[a] * mv / (m_min[a] + mv);
-      best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(static_cast<int>(a), k),
-                                                                  me, r_min[a], v_ref));
+      best = std::min(best, ContactLaw::critical_time_step(coeffs(static_cast<int>(a), k), me,
+                                                           r_min[a], v_ref));
     }
     // A driven sphere yields nothing: the membrane particle's mass alone.
     if (mv < 1e300)
       for (const auto& o : s.objects)
-        best = std::min(best, ViscoelasticHertz::critical_time_step(coeffs(o.material, k), mv,
-                                                                    o.radius, v_ref));
+        best = std::min(best,
+                        ContactLaw::critical_time_step(coeffs(o.material, k), mv, o.radius, v_ref));
     // Two particles of mass mv: the least reduced mass a self-contact can
     // have (the contact point's mass is at least mv).
     if (s.membranes[k].self_contact && mv < 1e300)
-      best = std::min(best, ViscoelasticHertz::critical_time_step(self_coeffs_[k], 0.5 * mv,
-                                                                  self_contact_radius(m), v_ref));
+      best = std::min(best, ContactLaw::critical_time_step(self_coeffs_[k], 0.5 * mv,
+                                                           self_contact_radius(m), v_ref));
   }
   return best;
 }

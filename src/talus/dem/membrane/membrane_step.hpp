@@ -23,7 +23,7 @@ namespace talus::dem::membrane {
 class MembraneStep {
  public:
   // Contact coefficients per (grain material, membrane) from the system's
-  // contact rules (ViscoelasticHertz, as Götz: walls and membranes alike).
+  // contact rules (ContactLaw, contact.hpp).
   explicit MembraneStep(const DemSystem<3>& s);
 
   // Forces of the current state on membrane particles and grains; no motion.
@@ -60,7 +60,7 @@ class MembraneStep {
 
  private:
   void kick(DemSystem<3>& s, double h) const;
-  const ViscoelasticHertz::Coeffs& coeffs(int grain_material, int membrane) const {
+  const ContactLaw::Coeffs& coeffs(int grain_material, int membrane) const {
     return coeffs_[static_cast<std::size_t>(grain_material) * grids_.size() + membrane];
   }
   int num_membranes() const { return static_cast<int>(grids_.size()); }
@@ -82,10 +82,10 @@ class MembraneStep {
     int contacts = 0;
   };
 
-  std::vector<ViscoelasticHertz::Coeffs> coeffs_;
+  std::vector<ContactLaw::Coeffs> coeffs_;
   // Self-contact (membranes with self_contact only): the membrane's material
   // against itself, the triangles each particle skips, buffers.
-  std::vector<ViscoelasticHertz::Coeffs> self_coeffs_;
+  std::vector<ContactLaw::Coeffs> self_coeffs_;
   std::vector<SelfExclusion> self_exclusion_;
   SelfContactScratch self_scratch_;
   std::vector<TriangleGrid> grids_;

@@ -35,7 +35,7 @@ SelfExclusion self_contact_exclusion(const Mesh& mesh) {
 }
 
 int add_self_contact_forces(Membrane& m, const TriangleGrid& grid, const SelfExclusion& exclusion,
-                            double radius, const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                            double radius, const ContactLaw::Coeffs& coeffs, double dt,
                             ContactMemory& memory, SelfContactScratch& s) {
   int contacts = 0;
   const int nv = static_cast<int>(m.x.size());

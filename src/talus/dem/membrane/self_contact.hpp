@@ -51,7 +51,7 @@ struct SelfContactScratch {
 // begin_step() before). Particles in increasing order, so the sums do not
 // depend on the thread count. Returns the number of contacts.
 int add_self_contact_forces(Membrane& m, const TriangleGrid& grid, const SelfExclusion& exclusion,
-                            double radius, const ViscoelasticHertz::Coeffs& coeffs, double dt,
+                            double radius, const ContactLaw::Coeffs& coeffs, double dt,
                             ContactMemory& memory, SelfContactScratch& scratch);
 
 }  // namespace talus::dem::membrane
