@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "talus/core/error.hpp"
+#include "talus/run/output_folder.hpp"
 #include "talus/scenario/scenario.hpp"
 
 namespace fs = std::filesystem;
@@ -71,7 +72,8 @@ int calibrate_command(const CalibrateOptions& opt) {
   const fs::path out = opt.out.empty()
                            ? fs::path("runs") / ("calibrate-" + fs::path(opt.file).stem().string())
                            : fs::path(opt.out);
-  prepare_output(out, opt.force);
+  // Held to the end: the lock, then the record of what talus wrote there.
+  const auto folder = run::OutputFolder::claim(out, opt.force);
 
   std::vector<std::vector<double>> measured(opt.values.size());
   std::vector<double> deviation(opt.values.size(), 0.0);

@@ -17,8 +17,6 @@ namespace fs = std::filesystem;
 
 namespace talus::app {
 
-void prepare_output(const std::string& out, bool force) { run::prepare_output(out, force); }
-
 std::string scenarios_folder() {
   if (const char* env = std::getenv("TALUS_SCENARIOS")) return env;
   return std::string(TALUS_SOURCE_DIR) + "/scenarios";

@@ -19,10 +19,6 @@ int run_command(const RunOptions& options);
 int validate_command(const ValidateOptions& options);
 int list_command();
 
-// Creates the output folder; refuses one that holds files unless forced
-// (then empties it). Throws InputError.
-void prepare_output(const std::string& out, bool force);
-
 // Folder of the bundled scenarios: $TALUS_SCENARIOS, else the source tree's.
 std::string scenarios_folder();
 

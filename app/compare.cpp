@@ -17,6 +17,7 @@
 #include "talus/geometry/flume.hpp"
 #include "talus/io/csv_reader.hpp"
 #include "talus/io/csv_writer.hpp"
+#include "talus/run/output_folder.hpp"
 #include "talus/scenario/compare_file.hpp"
 #include "talus/scenario/scenario.hpp"
 #include "talus/scenario/scenario_mpm.hpp"
@@ -157,7 +158,8 @@ int compare_command(const CompareOptions& opt) {
   }
   const fs::path out =
       opt.out.empty() ? fs::path("runs") / ("compare-" + file.name) : fs::path(opt.out);
-  prepare_output(out, opt.force);
+  // Held to the end: the lock, then the record of what talus wrote there.
+  const auto folder = run::OutputFolder::claim(out, opt.force);
 
   std::vector<Result> results;
   for (const auto& m : methods) {

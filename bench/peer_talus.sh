@@ -10,6 +10,9 @@ nx=20 ny=10 nz=40
 read -r lx ly lz Lx Lz t < <(awk -v nx="$nx" -v ny="$ny" -v nz="$nz" -v s="$steps" \
   'BEGIN{a=0.00201; printf "%.10g %.10g %.10g %.10g %.10g %.10g\n", nx*a, ny*a, nz*a, 6*nx*a, 1.5*nz*a, s*5e-6}')
 out=${BENCH_DIR:-/tmp/talus_bench}/peer_talus_t$th
+# The folder is this script's: binaries older than the .talus-run record would
+# leave it unrecorded, and a newer --force refuses such a folder.
+rm -rf "$out"
 "$bin" run "$root/scenarios/column_collapse.toml" --out "$out" --force --quiet --threads "$th" \
   --set "run.duration=$t" --set "run.domain={min=[0,0,0],max=[$Lx,$ly,$Lz]}" \
   --set "walls.3.point=[0,$ly,0]" --set "particles.0.box={min=[0,0,0],max=[$lx,$ly,$lz]}" \

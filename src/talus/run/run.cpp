@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 
 #include "talus/core/error.hpp"
 #include "talus/run/experiment.hpp"
@@ -16,23 +17,17 @@ namespace fs = std::filesystem;
 
 namespace talus::run {
 
-void prepare_output(const fs::path& out, bool force) {
-  if (fs::exists(out) && !fs::is_directory(out))
-    throw InputError(out.string() + ": output path exists and is not a folder");
-  if (fs::exists(out) && !fs::is_empty(out)) {
-    if (!force)
-      throw InputError(out.string() +
-                       ": output folder exists and is not empty; use --force to overwrite it or "
-                       "--out to choose another");
-    for (const auto& e : fs::directory_iterator(out)) fs::remove_all(e.path());
-  }
-  fs::create_directories(out);
-}
-
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// "file:line:" of the scenario's name.
+std::string where_name(const io::ScenarioFile& file) {
+  const auto* node = file.table.get("name");
+  const int line = node ? static_cast<int>(node->source().begin.line) : 0;
+  return line > 0 ? fmt::format("{}:{}:", file.path, line) : file.path + ":";
 }
 
 io::ScenarioFile load(const RunRequest& req, fs::path& out) {
@@ -47,6 +42,7 @@ io::ScenarioFile load(const RunRequest& req, fs::path& out) {
   if (req.file.empty()) throw InputError("talus run: a scenario file is required");
   auto file = io::load_scenario_file(req.file, req.sets);
   const std::string name = file.table["name"].value_or(std::string());
+  if (file.table.contains("name")) check_run_name(name, where_name(file));
   out = !req.out.empty() ? req.out : fs::path("runs") / (name.empty() ? "run" : name);
   return file;
 }
@@ -65,7 +61,12 @@ RunResult execute(const RunRequest& req) {
   if (resume && !method.checkpoints)
     throw InputError(out.string() + ": " + method.name + " runs write no checkpoints to resume");
   RunContext ctx{out, req.threads, resume};
-  if (!resume) ctx.prepare = [&] { prepare_output(out, req.force); };
+  // Held until the run is over: the lock, then the record of talus's files.
+  std::optional<OutputFolder> folder;
+  if (resume)
+    folder.emplace(OutputFolder::reopen(out));
+  else
+    ctx.prepare = [&] { folder.emplace(OutputFolder::claim(out, req.force)); };
   auto sim = method.create(file, ctx);
   auto experiments = attach_experiments(*sim, ctx);
   std::vector<Observer*> observers;
@@ -106,6 +107,8 @@ RunResult execute(const RunRequest& req) {
 
 std::string validate(const std::string& path, const std::vector<std::string>& sets) {
   const auto file = io::load_scenario_file(path, sets);
+  if (file.table.contains("name"))
+    check_run_name(file.table["name"].value_or(std::string()), where_name(file));
   if (file.method == "compare") {
     const auto c = io::read_compare_file(path);
     for (const auto& [name, method_file] : c.methods) validate(method_file, {});

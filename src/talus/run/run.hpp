@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "talus/run/loop.hpp"
+#include "talus/run/output_folder.hpp"
 
 namespace talus::run {
 
@@ -33,9 +34,5 @@ RunResult execute(const RunRequest& request);
 
 // Parses and builds a scenario without running: the one-line description.
 std::string validate(const std::string& file, const std::vector<std::string>& sets);
-
-// Creates the output folder; refuses one that holds files unless forced (then
-// empties it). Throws InputError.
-void prepare_output(const std::filesystem::path& out, bool force);
 
 }  // namespace talus::run

@@ -1,0 +1,190 @@
+#include "talus/run/output_folder.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <system_error>
+#include <vector>
+
+#include "talus/core/error.hpp"
+
+namespace talus::run {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kRecord = ".talus-run";
+constexpr const char* kLock = ".talus-lock";
+constexpr const char* kRunning = "talus run folder: running";
+constexpr const char* kFinished = "talus run folder: finished";
+
+bool is_own(const std::string& name) { return name == kRecord || name == kLock; }
+
+// What `.talus-run` says: whether the run finished, and the entries it wrote.
+struct Record {
+  bool present = false, finished = false;
+  std::set<std::string> entries;
+};
+
+Record read_record(const fs::path& out) {
+  Record r;
+  std::ifstream in(out / kRecord);
+  if (!in) return r;
+  r.present = true;
+  std::string line;
+  std::getline(in, line);
+  r.finished = line == kFinished;
+  while (std::getline(in, line))
+    if (!line.empty()) r.entries.insert(line);
+  return r;
+}
+
+// Writes the record through a temporary file and a rename, so that a reader
+// sees the old record or the new one, never half of one.
+void write_record(const fs::path& out, bool finished) {
+  std::vector<std::string> entries;
+  std::error_code ec;
+  if (finished)
+    for (const auto& e : fs::directory_iterator(out, ec)) {
+      const std::string name = e.path().filename().string();
+      if (!is_own(name) && name != std::string(kRecord) + ".tmp") entries.push_back(name);
+    }
+  std::sort(entries.begin(), entries.end());
+  const fs::path tmp = out / (std::string(kRecord) + ".tmp");
+  {
+    std::ofstream f(tmp);
+    f << (finished ? kFinished : kRunning) << '\n';
+    for (const auto& e : entries) f << e << '\n';
+    if (!f) throw InputError(fmt::format("{}: cannot write {}", out.string(), tmp.string()));
+  }
+  fs::rename(tmp, out / kRecord);
+}
+
+// Takes the folder's lock, or refuses when another run holds it.
+int lock(const fs::path& out) {
+  const fs::path path = out / kLock;
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw InputError(fmt::format("{}: cannot write in the output folder ({})", out.string(),
+                                 std::strerror(errno)));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    throw InputError(fmt::format(
+        "{}: another talus run is writing in this folder; wait for it or choose another --out",
+        out.string()));
+  }
+  return fd;
+}
+
+// Refuses --force on a folder unless everything in it is talus's own.
+void check_own_folder(const fs::path& out, const Record& record) {
+  const std::string refuse = "--force removes only the files of a talus run";
+  if (!record.present)
+    throw InputError(fmt::format(
+        "{}: not a talus run folder (no {}); {}: remove it yourself or choose another --out",
+        out.string(), kRecord, refuse));
+  if (!record.finished)
+    throw InputError(fmt::format(
+        "{}: left by a run that did not finish, so talus cannot tell its files from others; "
+        "resume it with --resume, or remove it yourself",
+        out.string()));
+  for (const auto& e : fs::directory_iterator(out)) {
+    const std::string name = e.path().filename().string();
+    if (!is_own(name) && !record.entries.count(name))
+      throw InputError(
+          fmt::format("{}: holds '{}', which talus did not write; {}: move it or "
+                      "choose another --out",
+                      out.string(), name, refuse));
+  }
+}
+
+bool holds_others(const fs::path& out) {
+  for (const auto& e : fs::directory_iterator(out))
+    if (!is_own(e.path().filename().string())) return true;
+  return false;
+}
+
+}  // namespace
+
+OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
+  if (fs::exists(out) && !fs::is_directory(out))
+    throw InputError(out.string() + ": output path exists and is not a folder");
+  // Everything is checked before the folder is touched.
+  const bool full = fs::exists(out) && holds_others(out);
+  if (full && !force)
+    throw InputError(out.string() +
+                     ": output folder exists and is not empty; use --force to overwrite it or "
+                     "--out to choose another");
+  if (full) check_own_folder(out, read_record(out));
+  fs::create_directories(out);
+  OutputFolder folder(out, lock(out));
+  // Read again under the lock: the run that wrote it may have finished since.
+  if (full) {
+    const Record record = read_record(out);
+    check_own_folder(out, record);
+    for (const auto& name : record.entries) fs::remove_all(out / name);
+  }
+  write_record(out, false);
+  folder.recording_ = true;
+  return folder;
+}
+
+OutputFolder OutputFolder::reopen(const fs::path& out) {
+  OutputFolder folder(out, lock(out));
+  write_record(out, false);
+  folder.recording_ = true;
+  return folder;
+}
+
+OutputFolder::OutputFolder(OutputFolder&& other) noexcept
+    : path_(std::move(other.path_)), lock_(other.lock_), recording_(other.recording_) {
+  other.lock_ = -1;
+}
+
+OutputFolder& OutputFolder::operator=(OutputFolder&& other) noexcept {
+  if (this != &other) {
+    release();
+    path_ = std::move(other.path_);
+    lock_ = other.lock_;
+    recording_ = other.recording_;
+    other.lock_ = -1;
+  }
+  return *this;
+}
+
+OutputFolder::~OutputFolder() { release(); }
+
+void OutputFolder::release() noexcept {
+  if (lock_ < 0) return;
+  try {
+    if (recording_) write_record(path_, true);
+  } catch (...) {
+    // The record serves a later --force only; a run that cannot write it has
+    // already reported why it could not write.
+  }
+  ::flock(lock_, LOCK_UN);
+  ::close(lock_);
+  lock_ = -1;
+}
+
+void check_run_name(const std::string& name, const std::string& where) {
+  const bool plain =
+      !name.empty() && name.front() != '.' && std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '-' || c == '_' || c == '.';
+      });
+  if (!plain)
+    throw InputError(fmt::format(
+        "{} 'name': expected a plain name (letters, digits, '-', '_', '.'; not starting with "
+        "'.'), got \"{}\": it becomes the folder runs/<name>; use --out to write elsewhere",
+        where, name));
+}
+
+}  // namespace talus::run
