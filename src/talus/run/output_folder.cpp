@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -27,9 +28,15 @@ constexpr const char* kFinished = "talus run folder: finished";
 
 bool is_own(const std::string& name) { return name == kRecord || name == kLock; }
 
-// What `.talus-run` says: whether the run finished, and the entries it wrote.
+constexpr const char* kScenario = "scenario ";
+
+// What `.talus-run` says: whether the run finished, the checksum of the
+// scenario.toml it started from, and the entries it wrote. Line 1 the state,
+// line 2 "scenario <checksum>" ("scenario -" before one is written), then one
+// entry per line.
 struct Record {
   bool present = false, finished = false;
+  std::string scenario = "-";
   std::set<std::string> entries;
 };
 
@@ -41,6 +48,10 @@ Record read_record(const fs::path& out) {
   std::string line;
   std::getline(in, line);
   r.finished = line == kFinished;
+  if (std::getline(in, line) && line.starts_with(kScenario))
+    r.scenario = line.substr(std::string(kScenario).size());
+  else if (!line.empty())
+    r.entries.insert(line);
   while (std::getline(in, line))
     if (!line.empty()) r.entries.insert(line);
   return r;
@@ -48,7 +59,7 @@ Record read_record(const fs::path& out) {
 
 // Writes the record through a temporary file and a rename, so that a reader
 // sees the old record or the new one, never half of one.
-void write_record(const fs::path& out, bool finished) {
+void write_record(const fs::path& out, bool finished, const std::string& scenario) {
   std::vector<std::string> entries;
   std::error_code ec;
   if (finished)
@@ -60,11 +71,20 @@ void write_record(const fs::path& out, bool finished) {
   const fs::path tmp = out / (std::string(kRecord) + ".tmp");
   {
     std::ofstream f(tmp);
-    f << (finished ? kFinished : kRunning) << '\n';
+    f << (finished ? kFinished : kRunning) << '\n' << kScenario << scenario << '\n';
     for (const auto& e : entries) f << e << '\n';
     if (!f) throw InputError(fmt::format("{}: cannot write {}", out.string(), tmp.string()));
   }
   fs::rename(tmp, out / kRecord);
+}
+
+// FNV-1a of scenario.toml ("-" when there is none): enough to see an edit.
+std::string scenario_checksum(const fs::path& out) {
+  std::ifstream in(out / "scenario.toml", std::ios::binary);
+  if (!in) return "-";
+  std::uint64_t h = 1469598103934665603ull;
+  for (char c; in.get(c);) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  return fmt::format("{:016x}", h);
 }
 
 // Takes the folder's lock, or refuses when another run holds it.
@@ -131,20 +151,35 @@ OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
     check_own_folder(out, record);
     for (const auto& name : record.entries) fs::remove_all(out / name);
   }
-  write_record(out, false);
+  write_record(out, false, folder.scenario_);
   folder.recording_ = true;
   return folder;
 }
 
 OutputFolder OutputFolder::reopen(const fs::path& out) {
   OutputFolder folder(out, lock(out));
-  write_record(out, false);
+  const Record record = read_record(out);
+  folder.scenario_ = scenario_checksum(out);
+  if (record.scenario != "-" && record.scenario != folder.scenario_)
+    throw InputError(fmt::format(
+        "{}: scenario.toml was changed after the run started; a resumed run continues the "
+        "scenario it started with: restore the file, or start a new run from the changed one",
+        (out / "scenario.toml").string()));
+  write_record(out, false, folder.scenario_);
   folder.recording_ = true;
   return folder;
 }
 
+void OutputFolder::scenario_written() {
+  scenario_ = scenario_checksum(path_);
+  write_record(path_, false, scenario_);
+}
+
 OutputFolder::OutputFolder(OutputFolder&& other) noexcept
-    : path_(std::move(other.path_)), lock_(other.lock_), recording_(other.recording_) {
+    : path_(std::move(other.path_)),
+      lock_(other.lock_),
+      recording_(other.recording_),
+      scenario_(std::move(other.scenario_)) {
   other.lock_ = -1;
 }
 
@@ -154,6 +189,7 @@ OutputFolder& OutputFolder::operator=(OutputFolder&& other) noexcept {
     path_ = std::move(other.path_);
     lock_ = other.lock_;
     recording_ = other.recording_;
+    scenario_ = std::move(other.scenario_);
     other.lock_ = -1;
   }
   return *this;
@@ -164,7 +200,7 @@ OutputFolder::~OutputFolder() { release(); }
 void OutputFolder::release() noexcept {
   if (lock_ < 0) return;
   try {
-    if (recording_) write_record(path_, true);
+    if (recording_) write_record(path_, true, scenario_);
   } catch (...) {
     // The record serves a later --force only; a run that cannot write it has
     // already reported why it could not write.

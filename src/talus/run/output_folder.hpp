@@ -21,8 +21,11 @@ class OutputFolder {
   // folder unless `force`, and with `force` a folder holding files talus did
   // not write; refuses a folder another run holds.
   static OutputFolder claim(const std::filesystem::path& out, bool force);
-  // Takes an existing run folder to continue a run in it (resume).
+  // Takes an existing run folder to continue a run in it (resume); refuses
+  // one whose scenario.toml changed since the run wrote it.
   static OutputFolder reopen(const std::filesystem::path& out);
+  // Records the checksum of the scenario.toml the run just wrote.
+  void scenario_written();
 
   OutputFolder(OutputFolder&& other) noexcept;
   OutputFolder& operator=(OutputFolder&& other) noexcept;
@@ -42,6 +45,7 @@ class OutputFolder {
   // Whether release() lists the entries as talus's: only once the folder was
   // found empty or emptied, never for a claim that was refused.
   bool recording_ = false;
+  std::string scenario_ = "-";  // checksum of scenario.toml, "-" before it is written
 };
 
 // A run name becomes the folder runs/<name>: it must be a plain name (letters,

@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "talus/core/error.hpp"
@@ -30,13 +32,36 @@ std::string where_name(const io::ScenarioFile& file) {
   return line > 0 ? fmt::format("{}:{}:", file.path, line) : file.path + ":";
 }
 
+// A resumed run continues the run in its folder exactly as it was set up, so
+// whatever would change it is refused rather than ignored.
+void check_resumable(const RunRequest& req) {
+  const fs::path& dir = req.resume;
+  if (!req.file.empty() || !req.sets.empty() || !req.out.empty() || req.force)
+    throw InputError(dir.string() +
+                     ": --resume continues the run in this folder as it was set up; a scenario "
+                     "file, --set, --out or --force cannot be honoured with it (start a new run "
+                     "for those)");
+  const fs::path checkpoint = dir / "checkpoint.bin";
+  if (!fs::exists(checkpoint))
+    throw InputError(dir.string() +
+                     ": no checkpoint.bin to resume from (set "
+                     "output.checkpoint_interval to write checkpoints)");
+  if (!fs::is_regular_file(checkpoint))
+    throw InputError(checkpoint.string() + ": not a file; it must be the checkpoint a run wrote");
+  std::ifstream summary(dir / "summary.json");
+  if (summary) {
+    const auto j = nlohmann::json::parse(summary, nullptr, false);
+    if (!j.is_discarded() && j.value("status", std::string()) == "completed")
+      throw InputError(dir.string() +
+                       ": this run completed; there is nothing to resume (its summary.json is "
+                       "the run's)");
+  }
+}
+
 io::ScenarioFile load(const RunRequest& req, fs::path& out) {
   if (!req.resume.empty()) {
     out = req.resume;
-    if (!fs::exists(out / "checkpoint.bin"))
-      throw InputError(out.string() +
-                       ": no checkpoint.bin to resume from (set "
-                       "output.checkpoint_interval to write checkpoints)");
+    check_resumable(req);
     return io::load_scenario_file((out / "scenario.toml").string(), {});
   }
   if (req.file.empty()) throw InputError("talus run: a scenario file is required");
@@ -68,6 +93,7 @@ RunResult execute(const RunRequest& req) {
   else
     ctx.prepare = [&] { folder.emplace(OutputFolder::claim(out, req.force)); };
   auto sim = method.create(file, ctx);
+  if (!resume && folder) folder->scenario_written();
   auto experiments = attach_experiments(*sim, ctx);
   std::vector<Observer*> observers;
   for (auto& e : experiments) observers.push_back(e.get());
