@@ -46,4 +46,9 @@ check "and nothing was written outside" '[ ! -e "$tmp/escaped" ] && [ ! -e "$tmp
 "$talus" validate "$cc" --set 'name="/tmp/x"' >"$tmp/out" 2>&1; rc=$?
 check "validate refuses an absolute run name (exit 2)" '[ $rc -eq 2 ] && grep -q "plain name" "$tmp/out"'
 
+# A place no one can create a folder in (even root): below a plain file.
+echo "x" >"$tmp/plain"
+"$talus" run "$cc" --out "$tmp/plain/run" --quiet "${small[@]}" >"$tmp/out" 2>&1; rc=$?
+check "an unwritable place is refused in plain words (exit 2)" '[ $rc -eq 2 ] && grep -q "cannot create the output folder" "$tmp/out" && ! grep -q "filesystem error" "$tmp/out"'
+
 finish output_folder

@@ -143,7 +143,12 @@ OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
                      ": output folder exists and is not empty; use --force to overwrite it or "
                      "--out to choose another");
   if (full) check_own_folder(out, read_record(out));
-  fs::create_directories(out);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec)
+    throw InputError(
+        fmt::format("{}: cannot create the output folder ({}); choose another with --out",
+                    out.string(), ec.message()));
   OutputFolder folder(out, lock(out));
   // Read again under the lock: the run that wrote it may have finished since.
   if (full) {
