@@ -43,7 +43,12 @@ int run_command(const RunOptions& opt) {
   req.sets = opt.sets;
   req.threads = opt.threads;
   req.force = opt.force;
-  if (!opt.quiet && isatty(STDERR_FILENO)) req.progress = progress_line;
+  // A terminal gets a progress line that rewrites itself; a batch job's log
+  // gets log.txt's lines.
+  const bool terminal = isatty(STDERR_FILENO);
+  if (!opt.quiet && terminal) req.progress = progress_line;
+  req.log_to_stderr = !opt.quiet && !terminal;
+  req.log_seconds = opt.log_seconds;
   const auto result = run::execute(req);
   if (!opt.quiet) {
     fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", result.stats.steps,

@@ -9,6 +9,7 @@ struct RunOptions {
   std::vector<std::string> sets;
   int threads = 1;
   bool force = false, quiet = false;
+  double log_seconds = 10.0;
 };
 struct ValidateOptions {
   std::string file;

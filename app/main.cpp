@@ -31,6 +31,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this folder");
   run_cmd->add_flag("--force", run.force, "write into an existing output folder");
   run_cmd->add_flag("--quiet,-q", run.quiet, "no progress on stderr");
+  run_cmd
+      ->add_option("--log-interval", run.log_seconds,
+                   "wall seconds between progress lines in log.txt (and on stderr when it is not "
+                   "a terminal)")
+      ->check(CLI::PositiveNumber);
 
   ValidateOptions val;
   auto* val_cmd = cli.add_subcommand("validate", "check a scenario file without running it");

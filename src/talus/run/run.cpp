@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -9,8 +10,10 @@
 #include <optional>
 
 #include "talus/core/error.hpp"
+#include "talus/core/version.hpp"
 #include "talus/run/experiment.hpp"
 #include "talus/run/method.hpp"
+#include "talus/run/run_log.hpp"
 #include "talus/run/summary.hpp"
 #include "talus/scenario/compare_file.hpp"
 #include "talus/scenario/scenario.hpp"
@@ -98,7 +101,15 @@ RunResult execute(const RunRequest& req) {
   std::vector<Observer*> observers;
   for (auto& e : experiments) observers.push_back(e.get());
   RunLoop loop(*sim, observers);
-  loop.progress = req.progress;
+  RunLog log(out, req.log_seconds, req.log_to_stderr);
+  log.started(fmt::format("talus {} {} {} ({}, {} thread{})", version(),
+                          resume ? "resumed" : "started", file.path, method.name, req.threads,
+                          req.threads == 1 ? "" : "s"));
+  loop.progress_seconds = std::min(loop.progress_seconds, req.log_seconds);
+  loop.progress = [&](const Progress& p) {
+    log.progress(p);
+    if (req.progress) req.progress(p);
+  };
   SummaryInput summary;
   summary.setup_seconds = seconds_since(t0);
   const std::int64_t first_step = sim->steps();
@@ -121,8 +132,11 @@ RunResult execute(const RunRequest& req) {
   } catch (const RunError& e) {
     fill("failed", e.what());
     write_summary(out, summary);
+    log.ended(fmt::format("failed at t = {:.6g} s: {}", sim->time(), e.what()));
     throw;
   }
+  log.ended(fmt::format("completed: {} steps to t = {:.6g} s in {:.1f} s of wall time",
+                        summary.steps, summary.simulated_time, summary.loop_seconds));
   result.stats = loop.stats();
   for (auto& e : experiments) {
     const auto line = e->headline(summary.experiments[e->name()]);

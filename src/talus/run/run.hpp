@@ -20,6 +20,8 @@ struct RunRequest {
   int threads = 1;
   bool force = false;  // empty an existing output folder
   std::function<void(const Progress&)> progress;
+  double log_seconds = 10.0;   // wall seconds between progress lines in log.txt
+  bool log_to_stderr = false;  // also write log.txt's lines to stderr (batch jobs)
 };
 
 struct RunResult {
