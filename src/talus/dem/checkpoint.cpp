@@ -72,13 +72,13 @@ struct Loader {
 
 template <int D>
 void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
-  // A driven sphere's friction springs are not stored (the io refuses
-  // checkpoints of [gripper] runs; this guards other callers).
+  // A driven sphere's friction springs are not stored, nor a membrane rig's
+  // mould faces and pinned supports (the scenario reader refuses checkpoints
+  // of the experiments that set them up; this guards other callers).
   if (!s.objects.empty())
-    throw InputError("checkpoints of runs with a driven object ([gripper]) are not supported");
-  // Nor the beam rig's mould faces and pinned supports.
+    throw InputError("checkpoints of runs with a driven object are not supported");
   for (const auto& m : s.membranes)
-    if (m.rig) throw InputError("checkpoints of [beam] runs are not supported");
+    if (m.rig) throw InputError("checkpoints of runs with a membrane rig are not supported");
   io::ArchiveWriter w;
   w.put(kMagic);
   w.put(kVersion);
