@@ -126,21 +126,14 @@ NeoHookean NeoHookean::make(const MaterialParams& p) {
   return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio), p.density};
 }
 DruckerPrager DruckerPrager::make(const MaterialParams& p) {
-  return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio),
-          p.density,
-          p.friction_angle,
-          p.dilatancy_angle,
-          p.cohesion,
-          p.tension_cutoff,
-          p.critical_volume_strain};
+  const auto k = ElasticConstants::from(p.youngs_modulus, p.poisson_ratio);
+  const double phi = p.friction_angle, psi = p.dilatancy_angle;
+  return {k, p.density, phi, psi, p.cohesion, p.tension_cutoff, p.critical_volume_strain};
 }
 MohrCoulomb MohrCoulomb::make(const MaterialParams& p) {
-  return {ElasticConstants::from(p.youngs_modulus, p.poisson_ratio),
-          p.density,
-          p.friction_angle,
-          p.dilatancy_angle,
-          p.cohesion,
-          p.critical_volume_strain};
+  const auto k = ElasticConstants::from(p.youngs_modulus, p.poisson_ratio);
+  const double phi = p.friction_angle, psi = p.dilatancy_angle;
+  return {k, p.density, phi, psi, p.cohesion, p.critical_volume_strain};
 }
 NewtonianFluid NewtonianFluid::make(const MaterialParams& p) {
   return {p.bulk_modulus, p.viscosity, p.density};

@@ -27,27 +27,14 @@ std::string describe_key(const Interval& range, KeyUnit unit) {
 }
 
 double to_stored(double value, KeyUnit unit) {
-  switch (unit) {
-    case KeyUnit::Plain:
-      return value;
-    case KeyUnit::Degrees:
-      return deg2rad(value);
-    case KeyUnit::TanOfDegrees:
-      return std::tan(deg2rad(value));
-  }
-  return value;
+  if (unit == KeyUnit::Plain) return value;
+  const double radians = deg2rad(value);
+  return unit == KeyUnit::Degrees ? radians : std::tan(radians);
 }
 
 double to_file(double value, KeyUnit unit) {
-  switch (unit) {
-    case KeyUnit::Plain:
-      return value;
-    case KeyUnit::Degrees:
-      return rad2deg(value);
-    case KeyUnit::TanOfDegrees:
-      return rad2deg(std::atan(value));
-  }
-  return value;
+  if (unit == KeyUnit::Plain) return value;
+  return rad2deg(unit == KeyUnit::Degrees ? value : std::atan(value));
 }
 
 std::optional<double> optional_number_in(TomlReader& r, std::string_view key, Interval range) {
