@@ -1,8 +1,10 @@
 #include "talus/dem/output_observer.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "talus/dem/checkpoint.hpp"
+#include "talus/io/csv_reader.hpp"
 
 namespace talus::dem {
 
@@ -164,6 +166,30 @@ DemOutputs<D>::DemOutputs(std::filesystem::path dir, const DemSystem<D>& s, bool
     if (resume) membranes_.back()->truncate_after(resume_time);
   }
   peak_wall_force.assign(s.walls.size(), 0.0);
+  if (resume) replay_peaks(io::read_csv(csv), s);
+}
+
+// The peaks of the rows the interrupted run wrote, in the order it wrote them:
+// the values are CSV text of the shortest round-trip form, so the resumed run's
+// summary gets the uninterrupted run's bits.
+template <int D>
+void DemOutputs<D>::replay_peaks(const io::CsvTable& table, const DemSystem<D>& s) {
+  const std::size_t t = table.column("time"), ke = table.column("kinetic_energy");
+  const char* axes = "xyz";
+  std::vector<std::array<std::size_t, D>> force(s.walls.size());
+  for (std::size_t w = 0; w < s.walls.size(); ++w)
+    for (int d = 0; d < D; ++d) force[w][d] = table.column(s.walls[w].name + "_f" + axes[d]);
+  for (const auto& row : table.rows) {
+    for (std::size_t w = 0; w < s.walls.size(); ++w) {
+      Vec3 f = Vec3::Zero();  // as Wall::force (z = 0 in 2D)
+      for (int d = 0; d < D; ++d) f[d] = row[force[w][d]];
+      peak_wall_force[w] = std::max(peak_wall_force[w], f.norm());
+    }
+    if (row[ke] > peak_kinetic_energy) {
+      peak_kinetic_energy = row[ke];
+      peak_kinetic_energy_time = row[t];
+    }
+  }
 }
 
 template <int D>

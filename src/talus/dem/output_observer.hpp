@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "talus/dem/builder.hpp"
+#include "talus/io/csv_reader.hpp"
 #include "talus/io/csv_writer.hpp"
 #include "talus/io/frame.hpp"
 #include "talus/io/vtk_writer.hpp"
@@ -41,6 +42,9 @@ class DemOutputs final {
   }
 
  private:
+  // A resumed run starts its peaks from the rows kept in series.csv.
+  void replay_peaks(const io::CsvTable& table, const DemSystem<D>& s);
+
   std::filesystem::path dir_;
   std::unique_ptr<io::CsvSeries> series_;
   std::unique_ptr<io::PvdSeries> particles_, walls_;
