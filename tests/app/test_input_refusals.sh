@@ -33,4 +33,14 @@ refused "a step above the critical one after --set" \
   "$tmp/step.toml" --set materials.0.density=2
 check "... naming the density behind it" 'grep -qF "materials.0.density = 2 kg/m^3" "$tmp/out"'
 
+# MPM: a fixed step above the stability limit blew up a few steps in and was
+# reported as a point leaving the grid (issue 28 §4, §5).
+sed 's/^time_step = .*/time_step = 0.01/' "$src/scenarios/mpm_column_collapse.toml" >"$tmp/mpm_step.toml"
+line=$(grep -n '^time_step' "$tmp/mpm_step.toml" | cut -d: -f1)
+refused "an MPM step above the stable one" \
+  "mpm_step.toml:$line: [run] 'time_step': 0.01 s is above the stable step" "$tmp/mpm_step.toml"
+check "... saying what would do" 'grep -q "use time_step = \"auto\"" "$tmp/out"'
+"$talus" run "$tmp/mpm_step.toml" --out "$tmp/mpm_run" --quiet >"$tmp/out" 2>&1; rc=$?
+check "talus run refuses it too (exit 2)" '[ $rc -eq 2 ] && grep -q "above the stable step" "$tmp/out"'
+
 finish "input refusals"

@@ -32,6 +32,11 @@ Solver<D>::Solver(Grid<D> g, std::vector<Material> m, SolverParams p)
 template <int D>
 double Solver<D>::time_step() const {
   if (params.fixed_time_step > 0.0) return params.fixed_time_step;
+  return cfl_time_step(params.cfl);
+}
+
+template <int D>
+double Solver<D>::cfl_time_step(double cfl) const {
   double speed = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const double c = wave_speed(materials[particles.material[i]]);
@@ -42,11 +47,11 @@ double Solver<D>::time_step() const {
   double rigid_speed = 0.0;
   for (const auto& r : rigid_bodies) rigid_speed = std::max(rigid_speed, r.max_speed(time));
   speed += rigid_speed;
-  double dt = speed > 0.0 ? params.cfl * grid.h / speed : params.cfl * grid.h;
+  double dt = speed > 0.0 ? cfl * grid.h / speed : cfl * grid.h;
   // Explicit viscosity is stable for dt < rho h^2 / (2 D eta).
   for (const auto& m : materials)
     if (const auto* fluid = std::get_if<NewtonianFluid>(&m); fluid && fluid->viscosity > 0.0)
-      dt = std::min(dt, params.cfl * fluid->density * grid.h * grid.h / (D * fluid->viscosity));
+      dt = std::min(dt, cfl * fluid->density * grid.h * grid.h / (D * fluid->viscosity));
   return dt;
 }
 

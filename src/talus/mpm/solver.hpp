@@ -68,6 +68,9 @@ class Solver {
 
   // The CFL step C h / max(c + |v|) over the particles (or the fixed one).
   double time_step() const;
+  // The CFL rule's step with Courant number `cfl` whatever the parameters say:
+  // cfl = 1 is the stability limit a fixed step is checked against.
+  double cfl_time_step(double cfl) const;
   // One step of length dt. Throws RunError when a particle leaves the grid or
   // a velocity stops being finite.
   void step(double dt);

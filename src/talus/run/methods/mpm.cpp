@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "talus/core/error.hpp"
 #include "talus/mpm/checkpoint.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/metrics.hpp"
@@ -120,17 +121,44 @@ template class MpmSimulation<3>;
 
 namespace {
 
+// "file:line: [run] 'time_step'" for messages.
+std::string where_time_step(const io::ScenarioFile& f) {
+  const auto* node = f.table["run"]["time_step"].node();
+  const int line = node ? static_cast<int>(node->source().begin.line) : 0;
+  return line > 0 ? fmt::format("{}:{}: [run] 'time_step'", f.path, line)
+                  : fmt::format("{}: [run] 'time_step'", f.path);
+}
+
+// A fixed step above the stability limit (the CFL rule with Courant number 1
+// at the initial state) would blow up a few steps in and be reported as a
+// point leaving the grid: refuse it before the run.
 template <int D>
-std::unique_ptr<Simulation> create_mpm(mpm::MpmScenario sc, const RunContext& ctx) {
+void check_fixed_step(const mpm::Solver<D>& s, const std::string& where) {
+  const double fixed = s.params.fixed_time_step;
+  if (!(fixed > 0.0)) return;
+  const double limit = s.cfl_time_step(1.0);
+  if (fixed > limit)
+    throw InputError(fmt::format(
+        "{}: {:.3g} s is above the stable step {:.3g} s of this scenario (cell size / (wave "
+        "speed + speed) at the start); use time_step = \"auto\" (the CFL rule, {:.3g} s) or a "
+        "step below {:.3g} s",
+        where, fixed, limit, s.cfl_time_step(s.params.cfl), limit));
+}
+
+template <int D>
+std::unique_ptr<Simulation> create_mpm(mpm::MpmScenario sc, const RunContext& ctx,
+                                       const std::string& where) {
   auto solver = mpm::build_mpm<D>(sc);
+  check_fixed_step(solver, where);
   if (ctx.resume) mpm::load_checkpoint(solver, mpm::MpmOutputs<D>::checkpoint_path(ctx.out));
   return std::make_unique<MpmSimulation<D>>(std::move(sc), std::move(solver), ctx.out, ctx.resume,
                                             ctx.threads);
 }
 
 template <int D>
-std::string validate_mpm(const mpm::MpmScenario& sc) {
+std::string validate_mpm(const mpm::MpmScenario& sc, const std::string& where) {
   const auto s = mpm::build_mpm<D>(sc);
+  check_fixed_step(s, where);
   return fmt::format("{}D MPM, {} points, {} material{}, first time step {:.3g} s", D,
                      s.particles.size(), sc.materials.size(), sc.materials.size() == 1 ? "" : "s",
                      s.time_step());
@@ -144,7 +172,8 @@ Method mpm_method() {
   m.accepts = [](const io::ScenarioFile& f) { return f.method == "mpm"; };
   m.validate = [](const io::ScenarioFile& f) {
     const auto sc = io::parse_mpm_scenario(f);
-    return sc.dimension == 2 ? validate_mpm<2>(sc) : validate_mpm<3>(sc);
+    return sc.dimension == 2 ? validate_mpm<2>(sc, where_time_step(f))
+                             : validate_mpm<3>(sc, where_time_step(f));
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
     auto sc = io::parse_mpm_scenario(f);
@@ -157,8 +186,8 @@ Method mpm_method() {
       // must start from the very same numbers to end in the same state.
       sc = io::parse_mpm_scenario(io::load_scenario_file(path.string(), {}));
     }
-    return sc.dimension == 2 ? create_mpm<2>(std::move(sc), ctx)
-                             : create_mpm<3>(std::move(sc), ctx);
+    return sc.dimension == 2 ? create_mpm<2>(std::move(sc), ctx, where_time_step(f))
+                             : create_mpm<3>(std::move(sc), ctx, where_time_step(f));
   };
   return m;
 }
