@@ -56,7 +56,9 @@ double metric(const nlohmann::json& summary, const std::string& path, const fs::
 
 }  // namespace
 
-int calibrate_command(const CalibrateOptions& opt) {
+int calibrate_command(const CalibrateOptions& given) {
+  CalibrateOptions opt = given;
+  opt.file = resolve_scenario(given.file);
   if (opt.values.empty()) throw InputError("talus calibrate: --values needs at least one value");
   if (opt.targets.empty())
     throw InputError("talus calibrate: --target needs at least one metric=value");

@@ -12,6 +12,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/run/run.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,7 +38,7 @@ void progress_line(const run::Progress& p) {
 int run_command(const RunOptions& opt) {
   omp_set_num_threads(opt.threads);
   run::RunRequest req;
-  req.file = opt.file;
+  req.file = resolve_scenario(opt.file);
   req.out = opt.out;
   req.resume = opt.resume;
   req.sets = opt.sets;
@@ -62,26 +63,62 @@ int run_command(const RunOptions& opt) {
 }
 
 int validate_command(const ValidateOptions& opt) {
-  fmt::print("{}: {}\n", opt.file, run::validate(opt.file, opt.sets));
+  const std::string file = resolve_scenario(opt.file);
+  fmt::print("{}: {}\n", file, run::validate(file, opt.sets));
   return 0;
 }
 
-int list_command() {
+namespace {
+
+// The bundled scenario files, in name order (sub-folders included).
+std::vector<fs::path> bundled_scenarios() {
   const fs::path dir = scenarios_folder();
   if (!fs::is_directory(dir)) throw InputError(dir.string() + ": scenarios folder not found");
   std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().extension() == ".toml") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
-    std::string desc;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file() && e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end(),
+            [](const fs::path& a, const fs::path& b) { return a.stem() < b.stem(); });
+  return files;
+}
+
+// "dem 3D", "runout fv2d 2D", "mpm 2D", "compare": what a scenario runs.
+std::string kind_of(const toml::table& t) {
+  const std::string method = t["method"].value_or(std::string("?"));
+  if (method == "runout") {
+    const std::string model = t["run"]["model"].value_or(std::string("dan"));
+    return fmt::format("runout {} {}D", model, model == "fv2d" ? 2 : 1);
+  }
+  if (const auto dim = t["run"]["dimension"].value<int64_t>())
+    return fmt::format("{} {}D", method, *dim);
+  return method;
+}
+
+}  // namespace
+
+std::string resolve_scenario(const std::string& arg) {
+  if (arg.empty() || fs::exists(arg) || arg.find('/') != std::string::npos ||
+      fs::path(arg).extension() == ".toml")
+    return arg;
+  for (const auto& f : bundled_scenarios())
+    if (f.stem() == arg) return f.string();
+  throw InputError(fmt::format(
+      "{}: neither a file nor the name of a bundled scenario (`talus list` shows them)", arg));
+}
+
+int list_command() {
+  for (const auto& f : bundled_scenarios()) {
+    std::string kind = "(unreadable)", duration, desc;
     try {
-      const auto t = toml::parse_file(f.string());
+      // Through the reader, so that a file that extends another shows the result.
+      const auto file = io::load_scenario_file(f.string(), {});
+      const toml::table& t = file.table;
+      kind = kind_of(t);
       desc = t["description"].value_or(std::string());
+      if (const auto d = t["run"]["duration"].value<double>()) duration = fmt::format("{:g} s", *d);
     } catch (const std::exception&) {
-      desc = "(unreadable)";
     }
-    fmt::print("{:<28} {}\n", f.stem().string(), desc);
+    fmt::print("{:<28} {:<16} {:>7}  {}\n", f.stem().string(), kind, duration, desc);
   }
   return 0;
 }

@@ -20,6 +20,10 @@ int run_command(const RunOptions& options);
 int validate_command(const ValidateOptions& options);
 int list_command();
 
+// A scenario argument: a file as given, or the name of a bundled scenario
+// ("column_collapse" for scenarios/column_collapse.toml). InputError if neither.
+std::string resolve_scenario(const std::string& arg);
+
 // Folder of the bundled scenarios: $TALUS_SCENARIOS, else the source tree's.
 std::string scenarios_folder();
 

@@ -136,7 +136,9 @@ nlohmann::json json_number(double v) {
 
 }  // namespace
 
-int compare_command(const CompareOptions& opt) {
+int compare_command(const CompareOptions& given) {
+  CompareOptions opt = given;
+  opt.file = resolve_scenario(given.file);
   const auto file = io::read_compare_file(opt.file);
   std::vector<std::string> methods = opt.methods;
   if (methods.empty()) {

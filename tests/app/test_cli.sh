@@ -46,10 +46,14 @@ check "--force overwrites" '[ $rc -eq 0 ]'
 "$talus" list >"$tmp/out" 2>&1; rc=$?
 check "list shows bundled scenarios" '[ $rc -eq 0 ] && grep -q column_collapse "$tmp/out"'
 
-# Every bundled scenario validates as it is.
-for f in "$src"/scenarios/*.toml; do
-  "$talus" validate "$f" >"$tmp/out" 2>&1; rc=$?
-  check "bundled $(basename "$f") validates" '[ $rc -eq 0 ]'
+# Every bundled scenario validates as it is, by the name `talus list` shows.
+"$talus" list >"$tmp/list" 2>&1
+check "list shows every bundled file with its method" '[ "$(wc -l <"$tmp/list")" -eq "$(ls "$src"/scenarios/*.toml | wc -l)" ] && grep -Eq "^column_collapse +dem 3D +0.3 s" "$tmp/list"'
+for name in $(awk '{print $1}' "$tmp/list"); do
+  "$talus" validate "$name" >"$tmp/out" 2>&1; rc=$?
+  check "bundled $name validates by name" '[ $rc -eq 0 ]'
 done
+"$talus" validate no_such_scenario >"$tmp/out" 2>&1; rc=$?
+check "an unknown name is refused (exit 2)" '[ $rc -eq 2 ] && grep -q "talus list" "$tmp/out"'
 
 finish cli
