@@ -42,7 +42,7 @@ TYPED_TEST(Energy, FreeFallIsExactToRoundOff) {
   DemScenario sc = scenario(D, HertzMindlin::name, dt, g);
   sc.materials.push_back(hertz_material("grain", 2500, 1e7, 0.3, 0.5, 0.5));
   add_balls(sc, {ball(x0, v0, 1e-3, "grain")});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   run->stepper->prime();
   const auto& p = run->system.particles;
   double worst_x = 0.0, worst_v = 0.0;
@@ -73,7 +73,7 @@ TYPED_TEST(Energy, ElasticBouncingBallKeepsItsEnergy) {
   sc.materials.push_back(rigid_material("rigid"));
   sc.walls.push_back(floor_wall<D>("rigid"));
   add_balls(sc, {ball((R + h0) * up<D>(), Vec3::Zero(), R, "grain")});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   run->stepper->prime();
   const auto& p = run->system.particles;
   auto energy = [&] { return 0.5 * m * p.v[0].squaredNorm() + m * kG * (p.x[0][kUp<D>] - R); };
@@ -166,7 +166,7 @@ void elastic_box(std::string_view model, double tolerance) {
   // energy bound; a twentieth of it keeps the Verlet error small.
   const double dt = 0.05 * build_dem<D>(sc, {})->system.dt;
   sc.run.time_step = dt;
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   run->stepper->prime();
   const double e0 = total_energy(run->system, law, L);
   double worst = 0.0;

@@ -64,7 +64,7 @@ SlideResult slide(double theta, double mu, double duration) {
   const double m = sc.materials[0].density * Space<D>::volume(R);
   const double h = R - resting_overlap(sc.materials[0], R, m * kG * std::cos(theta));
   add_balls(sc, {ball(h * up<D>(), Vec3::Zero(), R, "grain")});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   run->stepper->prime();
   const auto& p = run->system.particles;
   const double dt = run->system.dt;
@@ -124,7 +124,7 @@ TYPED_TEST(Friction, EpsdRollingDeceleratesAtFiveSeventhsMuRG) {
   // Rolling in +x: omega about +y (3D) or -z (2D) with the contact point at rest.
   const Vec3 spin = (D == 3 ? Vec3(Vec3::UnitY()) : Vec3(-Vec3::UnitZ())) * (v0 / c);
   add_balls(sc, {ball((R - xi) * up<D>(), v0 * Vec3::UnitX(), R, "grain", spin)});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   run->stepper->prime();
   const auto& p = run->system.particles;
   const double dt = run->system.dt;

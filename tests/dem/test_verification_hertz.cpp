@@ -63,7 +63,7 @@ TYPED_TEST(HertzImpact, ChungOoiCase1TwoEqualSpheres) {
   const double gap = 1e-5;
   add_balls(sc, {ball(-(R + gap) * Vec3::UnitX(), v * Vec3::UnitX(), R, "glass"),
                  ball((R + gap) * Vec3::UnitX(), -v * Vec3::UnitX(), R, "glass")});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   const Impact<D> imp = measure_impact(*run, 0, pair_overlap<D>(0, 1), 20 * kSteps);
   ASSERT_TRUE(imp.finished);
   std::printf(
@@ -97,7 +97,7 @@ TYPED_TEST(HertzImpact, ChungOoiCase2SphereOnRigidPlane) {
   sc.materials.push_back(rigid_material("rigid"));
   sc.walls.push_back(floor_wall<D>("rigid"));
   add_balls(sc, {ball((R + 1e-6) * up<D>(), -v * up<D>(), R, "aluminium")});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   const Impact<D> imp = measure_impact(*run, 0, floor_overlap<D>(0), 20 * kSteps);
   ASSERT_TRUE(imp.finished);
   std::printf(
@@ -138,13 +138,13 @@ TYPED_TEST(HertzImpact, ChungOoiCase3RestitutionEqualsInput) {
       if (wall) {
         sc.walls.push_back(floor_wall<D>("rigid"));
         add_balls(sc, {ball((R + 1e-6) * up<D>(), -v * up<D>(), R, "grain")});
-        auto run = build_dem<D>(sc, {});
+        auto run = build<D>(sc);
         imp = measure_impact(*run, 0, floor_overlap<D>(0), 100000);
         v_in = -v;
       } else {
         add_balls(sc, {ball(-(R + 1e-6) * up<D>(), v * up<D>(), R, "grain"),
                        ball((R + 1e-6) * up<D>(), -v * up<D>(), R, "grain")});
-        auto run = build_dem<D>(sc, {});
+        auto run = build<D>(sc);
         imp = measure_impact(*run, 1, pair_overlap<D>(0, 1), 100000);
         v_in = -v;
       }

@@ -42,12 +42,12 @@ double linear_restitution(double kn, double beta, bool wall, bool may_pull) {
   if (wall) {
     sc.walls.push_back(floor_wall<D>("rigid"));
     add_balls(sc, {ball((R + gap) * up<D>(), -v * up<D>(), R, "sand")});
-    auto run = build_dem<D>(sc, {});
+    auto run = build<D>(sc);
     imp = measure_impact(*run, 0, floor_overlap<D>(0), 100000);
   } else {
     add_balls(sc, {ball(-(R + gap) * up<D>(), v * up<D>(), R, "sand"),
                    ball((R + gap) * up<D>(), -v * up<D>(), R, "sand")});
-    auto run = build_dem<D>(sc, {});
+    auto run = build<D>(sc);
     imp = measure_impact(*run, 1, pair_overlap<D>(0, 1), 100000);
   }
   EXPECT_TRUE(imp.finished);

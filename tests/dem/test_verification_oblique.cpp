@@ -51,7 +51,7 @@ Rebound oblique_impact(double theta_deg) {
   sc.materials.push_back(hertz_material("alumina", kRho, kE, kNu, kE_n, kMu));
   sc.walls.push_back(floor_wall<D>("alumina"));
   add_balls(sc, {ball((kR + 1e-7) * up<D>(), vt * Vec3::UnitX() - vn * up<D>(), kR, "alumina")});
-  auto run = build_dem<D>(sc, {});
+  auto run = build<D>(sc);
   const Impact<D> imp = measure_impact(*run, 0, floor_overlap<D>(0), 100000);
   EXPECT_TRUE(imp.finished) << theta_deg;
   const double inertia = Space<D>::inertia_factor() * m * kR * kR;

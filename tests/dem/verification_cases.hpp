@@ -14,8 +14,23 @@
 #include "talus/dem/builder.hpp"
 #include "talus/dem/contact/laws.hpp"
 #include "talus/dem/params.hpp"
+#ifdef TALUS_TEST_GPU_BACKEND
+#include "dem_gpu/test_backend.hpp"
+#endif
 
 namespace talus::dem::verification {
+
+// A case ready to run: on the CPU stepper, or, where these tests are compiled
+// into test_dem_gpu (TALUS_TEST_GPU_BACKEND), on the GPU backend the test run
+// names (tests/dem_gpu/test_backend.hpp), with the same tolerances.
+template <int D>
+std::unique_ptr<DemRun<D>> build(const DemScenario& sc) {
+  auto run = build_dem<D>(sc, {});
+#ifdef TALUS_TEST_GPU_BACKEND
+  run->stepper = test::backend_stepper<D>(run->system);
+#endif
+  return run;
+}
 
 // The axis gravity acts along: y for disks, z for spheres.
 template <int D>

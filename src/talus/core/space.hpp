@@ -8,7 +8,16 @@
 
 // Hot per-contact functions are forced inline: the stepper instantiates many
 // contact models in one translation unit, where GCC's inliner gives up early.
+// Compiled by nvcc (the GPU backend, dem/gpu/) they are device functions too,
+// so the GPU runs the very contact laws the CPU runs.
+// TALUS_HD marks other code the GPU shares (wall primitives' closest points).
+#ifdef __CUDACC__
+#define TALUS_HOT __host__ __device__ inline __attribute__((always_inline))
+#define TALUS_HD __host__ __device__
+#else
 #define TALUS_HOT inline __attribute__((always_inline))
+#define TALUS_HD
+#endif
 
 namespace talus {
 

@@ -256,6 +256,7 @@ void DemOutputs<D>::on_snapshot(const DemRun<D>& run) {
 template <int D>
 void DemOutputs<D>::on_checkpoint(const DemRun<D>& run) {
   series_->flush();
+  run.stepper->sync_lists();
   save_checkpoint(run.system, checkpoint_path(dir_));
 }
 

@@ -19,8 +19,9 @@ struct PairKinematics {
   ContactKinematics<D> kin;
   double ci, cj;
 };
-template <int D, bool with_inertia>
-TALUS_HOT PairKinematics<D> pair_kinematics(const Particles<D>& p, int i, int j,
+// `p` is a Particles<D> or any view with its field names (the GPU backend's).
+template <int D, bool with_inertia, class P>
+TALUS_HOT PairKinematics<D> pair_kinematics(const P& p, int i, int j,
                                             const typename Space<D>::Vec& d, double d2) {
   PairKinematics<D> out;
   auto& kin = out.kin;

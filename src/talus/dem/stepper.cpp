@@ -14,11 +14,13 @@
 #include "talus/dem/contact/rolling.hpp"
 #include "talus/dem/force_target.hpp"
 #include "talus/dem/hertz_pairs.hpp"
+#include "talus/dem/kick.hpp"
 #include "talus/dem/kuen_rolling.hpp"
 #include "talus/dem/linear_pairs.hpp"
 #include "talus/dem/membrane/membrane_step.hpp"
 #include "talus/dem/pair_kinematics.hpp"
 #include "talus/dem/thread_partition.hpp"
+#include "talus/dem/wall_motion.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
 
 namespace talus::dem {
@@ -157,7 +159,7 @@ class Stepper final : public StepperBase<D> {
     // First half kick and drift in one pass over the particles.
     const auto [i0, i1] = partition_.particle_range(n);
     for (int i = i0; i < i1; ++i) {
-      kick_one(p, i, half);
+      kick_one<D>(p, i, half);
       p.x[i] += dt * p.v[i];
       const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
       // A NaN position counts as infinitely far: the rebuild then stops the run.
@@ -223,32 +225,12 @@ class Stepper final : public StepperBase<D> {
     step_open_ = false;
   }
 
-  // Half kick of velocity Verlet, with PFC's optional local damping. A locked
-  // rotation (Kuen's Model 1) keeps omega at zero. Applied particle by
-  // particle inside other passes (drift; wall forces), to save passes.
-  struct Kick {
-    Vec g;
-    double h, alpha;
-    bool rotate;
-  };
+  // Half kick (dem/kick.hpp), applied particle by particle inside other
+  // passes (drift; wall forces), to save passes.
+  using Kick = dem::Kick<D>;
   Kick kick_params(double h) const {
     return {s_.gravity, h, s_.contact.local_damping, !s_.contact.lock_rotation};
   }
-  TALUS_HOT static void kick_one(Particles<D>& p, int i, const Kick& k) {
-    Vec f = p.f[i] + p.m[i] * k.g;
-    Rot t = p.t[i];
-    if (k.alpha > 0.0) {
-      for (int d = 0; d < D; ++d) f[d] -= k.alpha * std::abs(f[d]) * sign(p.v[i][d]);
-      if constexpr (D == 2) {
-        t -= k.alpha * std::abs(t) * sign(p.w[i]);
-      } else {
-        for (int d = 0; d < 3; ++d) t[d] -= k.alpha * std::abs(t[d]) * sign(p.w[i][d]);
-      }
-    }
-    p.v[i] += (k.h * p.inv_m[i]) * f;
-    if (k.rotate) p.w[i] += (k.h * p.inv_I[i]) * t;
-  }
-  static double sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
   // Moves walls to the current time; true when a wall appeared or vanished.
   // (A run without walls once counted as never set up here, so it rebuilt the
@@ -294,25 +276,9 @@ class Stepper final : public StepperBase<D> {
   double wall_time() const { return s_.settling ? 0.0 : s_.time; }
   bool wall_active(const geometry::Wall& w) const { return s_.settling || w.active(s_.time); }
 
-  // Largest distance any point of a moving wall has travelled since the last
-  // build (translation and vibration exactly, rotation bounded by the angle
-  // times the farthest reach from the pivot).
   double wall_motion_since_build() const {
-    double moved = 0.0;
-    for (std::size_t k = 0; k < s_.walls.size(); ++k) {
-      const auto& w = s_.walls[k];
-      if (!w.moves()) continue;
-      double d = (w.displacement(wall_time()) - s_.wall_displacement_at_build[k]).norm();
-      if (w.motion.angular_velocity.squaredNorm() > 0.0) {
-        double reach = 0.0;
-        for (const auto& prim : w.reference)
-          for (const Vec3& q : {prim.p0, prim.p1, prim.p2})
-            reach = std::max(reach, (q - w.motion.pivot).norm() + prim.radius);
-        d += std::abs(w.rotation_angle(wall_time()) - s_.wall_angle_at_build[k]) * reach;
-      }
-      moved = std::max(moved, d);
-    }
-    return moved;
+    return wall_motion_since(s_.walls, wall_time(), s_.wall_displacement_at_build,
+                             s_.wall_angle_at_build);
   }
 
   void remove_escaped() {
@@ -600,7 +566,7 @@ class Stepper final : public StepperBase<D> {
       if constexpr (D == 3)
         if (membranes_) membranes_->add_to_grain(p, i);
       if (then_kick) {
-        kick_one(p, i, *then_kick);
+        kick_one<D>(p, i, *then_kick);
         if (kuen_on) kuen.apply(p, i);
       }
     }

@@ -37,6 +37,10 @@ class StepperBase {
   // hot path): the contact law evaluated on a copy of each pair's history
   // without advancing it, so the state is left as it was.
   virtual std::vector<PairContactForce> pair_contact_forces() const = 0;
+  // Brings the neighbour list and contact history into the system (before a
+  // checkpoint): the GPU stepper keeps them on the device between steps; the
+  // CPU stepper's are always there.
+  virtual void sync_lists() {}
 };
 
 template <int D>

@@ -60,8 +60,8 @@ inline bool make_triangle(const Vec3& a, const Vec3& b, const Vec3& c, Primitive
 namespace detail {
 
 // Any unit vector perpendicular to the unit vector a (for degenerate normals).
-inline Eigen::Vector2d perpendicular(const Eigen::Vector2d& a) { return {-a.y(), a.x()}; }
-inline Vec3 perpendicular(const Vec3& a) {
+TALUS_HD inline Eigen::Vector2d perpendicular(const Eigen::Vector2d& a) { return {-a.y(), a.x()}; }
+TALUS_HD inline Vec3 perpendicular(const Vec3& a) {
   const Vec3 other = std::abs(a.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   return a.cross(other).normalized();
 }
@@ -69,7 +69,7 @@ inline Vec3 perpendicular(const Vec3& a) {
 // Fills out from a nearest point q; when x lies on the primitive the direction
 // is undefined and fallback() (a unit vector) is used.
 template <int D, class V, class Fallback>
-inline bool finish(const V& x, const V& q, Fallback fallback, double cutoff, Closest<D>& out) {
+TALUS_HD inline bool finish(const V& x, const V& q, Fallback fallback, double cutoff, Closest<D>& out) {
   const V diff = x - q;
   const double d = diff.norm();
   if (d > cutoff) return false;
@@ -80,7 +80,7 @@ inline bool finish(const V& x, const V& q, Fallback fallback, double cutoff, Clo
 }
 
 template <int D>
-inline bool closest_segment(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
+TALUS_HD inline bool closest_segment(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
                             Closest<D>& out) {
   using V = typename Space<D>::Vec;
   const V a = Space<D>::from3(p.p0), b = Space<D>::from3(p.p1);
@@ -95,7 +95,7 @@ inline bool closest_segment(const Primitive& p, const typename Space<D>::Vec& x,
 // Ends outside the angular range map to the nearer end point: for a point at
 // polar angle phi the distance to the circle point at theta grows with
 // |theta - phi| (mod 2 pi), so the nearest arc point is an end point.
-inline bool closest_arc(const Primitive& p, const Eigen::Vector2d& x, double cutoff,
+TALUS_HD inline bool closest_arc(const Primitive& p, const Eigen::Vector2d& x, double cutoff,
                         Closest<2>& out) {
   using V = Eigen::Vector2d;
   const V c = Space<2>::from3(p.p0);
@@ -125,7 +125,7 @@ inline bool closest_arc(const Primitive& p, const Eigen::Vector2d& x, double cut
 }
 
 template <int D>
-inline bool closest_plane(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
+TALUS_HD inline bool closest_plane(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
                           Closest<D>& out) {
   using V = typename Space<D>::Vec;
   const V n = Space<D>::from3(p.n);
@@ -140,7 +140,7 @@ inline bool closest_plane(const Primitive& p, const typename Space<D>::Vec& x, d
 
 // Ericson, Real-Time Collision Detection (2005) 5.1.5: Voronoi regions of the
 // vertices, then the edges, else the face.
-inline bool closest_triangle(const Primitive& p, const Vec3& x, double cutoff, Closest<3>& out) {
+TALUS_HD inline bool closest_triangle(const Primitive& p, const Vec3& x, double cutoff, Closest<3>& out) {
   const Vec3 &a = p.p0, &b = p.p1, &c = p.p2;
   const double s = (x - a).dot(p.n);
   if (std::abs(s) > cutoff) return false;  // the plane is never farther than the triangle
@@ -178,7 +178,7 @@ inline bool closest_triangle(const Primitive& p, const Vec3& x, double cutoff, C
 // `normal` always points into the particle side. A centre more than cutoff
 // beyond the surface has passed through and is not in contact. Past the ends
 // of a finite cylinder the nearest point is on the rim circle (open ends).
-inline bool closest_cylinder(const Primitive& p, const Vec3& x, double cutoff, Closest<3>& out) {
+TALUS_HD inline bool closest_cylinder(const Primitive& p, const Vec3& x, double cutoff, Closest<3>& out) {
   const Vec3 rel = x - p.p0;
   const double axial = rel.dot(p.n);
   const Vec3 radial_vec = rel - axial * p.n;
@@ -204,7 +204,7 @@ inline bool closest_cylinder(const Primitive& p, const Vec3& x, double cutoff, C
 // (out is then unspecified). 2D: Segment, Arc, Plane (the line through p0 with
 // normal n). 3D: Plane, Triangle, Cylinder, Segment. Other combinations: false.
 template <int D>
-inline bool closest_point(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
+TALUS_HD inline bool closest_point(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
                           Closest<D>& out) {
   switch (p.kind) {
     case PrimitiveKind::Segment:

@@ -100,6 +100,10 @@ Vec3 Wall::velocity_at(const Vec3& point, double t) const {
   return v;
 }
 
+Vec3 Wall::angular_velocity_at(double t) const {
+  return moving_at(motion, t) ? motion.angular_velocity : Vec3::Zero();
+}
+
 void Wall::bounds(Vec3& lo, Vec3& hi) const {
   lo = Vec3::Constant(kInf);
   hi = Vec3::Constant(-kInf);

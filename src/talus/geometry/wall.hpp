@@ -72,6 +72,9 @@ struct Wall {
   void update(double t);
   // Velocity of the wall material at `point` (a point of the current geometry).
   Vec3 velocity_at(const Vec3& point, double t) const;
+  // Its angular velocity at time t (zero outside [move_start, move_stop)):
+  // velocity_at(x, t) = velocity_at(pivot_at(t), t) + this x (x - pivot_at(t)).
+  Vec3 angular_velocity_at(double t) const;
   bool active(double t) const { return t < motion.remove_at; }
   // Displacement of the pivot: translation plus vibration.
   Vec3 displacement(double t) const;
