@@ -42,6 +42,9 @@ int run_command(const RunOptions& opt) {
   req.out = opt.out;
   req.resume = opt.resume;
   req.sets = opt.sets;
+  // --backend is the override it stands for; a resumed run keeps its own
+  // (the refusal of extra --set values then names it).
+  if (!opt.backend.empty()) req.sets.push_back("run.backend=\"" + opt.backend + "\"");
   req.threads = opt.threads;
   req.force = opt.force;
   // A terminal gets a progress line that rewrites itself; a batch job's log
@@ -64,7 +67,9 @@ int run_command(const RunOptions& opt) {
 
 int validate_command(const ValidateOptions& opt) {
   const std::string file = resolve_scenario(opt.file);
-  fmt::print("{}: {}\n", file, run::validate(file, opt.sets));
+  auto sets = opt.sets;
+  if (!opt.backend.empty()) sets.push_back("run.backend=\"" + opt.backend + "\"");
+  fmt::print("{}: {}\n", file, run::validate(file, sets));
   return 0;
 }
 

@@ -6,6 +6,7 @@ namespace talus::app {
 
 struct RunOptions {
   std::string file, out, resume;
+  std::string backend;  // "cpu" | "gpu": sets run.backend (DEM)
   std::vector<std::string> sets;
   int threads = 1;
   bool force = false, quiet = false;
@@ -13,6 +14,7 @@ struct RunOptions {
 };
 struct ValidateOptions {
   std::string file;
+  std::string backend;
   std::vector<std::string> sets;
 };
 

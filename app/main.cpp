@@ -29,6 +29,10 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   run_cmd->add_option("--threads,-j", run.threads, "OpenMP threads")->check(CLI::PositiveNumber);
   run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this folder");
+  run_cmd
+      ->add_option("--backend", run.backend,
+                   "where DEM steps run: cpu or gpu (sets run.backend; docs/gpu.md)")
+      ->check(CLI::IsMember({"cpu", "gpu"}));
   run_cmd->add_flag("--force", run.force, "write into an existing output folder");
   run_cmd->add_flag("--quiet,-q", run.quiet, "no progress on stderr");
   run_cmd
@@ -41,6 +45,8 @@ int main(int argc, char** argv) {
   auto* val_cmd = cli.add_subcommand("validate", "check a scenario file without running it");
   val_cmd->add_option("file", val.file, "scenario file")->required();
   val_cmd->add_option("--set", val.sets, "override a scenario value: key=value");
+  val_cmd->add_option("--backend", val.backend, "cpu or gpu (sets run.backend)")
+      ->check(CLI::IsMember({"cpu", "gpu"}));
 
   auto* list_cmd = cli.add_subcommand("list", "list the bundled scenarios");
   CompareOptions cmp;

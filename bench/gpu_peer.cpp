@@ -1,7 +1,10 @@
 // Throughput of the peer column (../shared/peers/README.md §1, scaled to
 // nx x ny x nz grains) on the CPU stepper or the GPU backend, DEM layers only
 // (the GPU machine has no GDAL): bench/gpu_peer.sh runs it.
-// Usage: bench_gpu_peer NX NY NZ WARMUP STEPS cpu|gpu|emulated [THREADS]
+// Usage: bench_gpu_peer NX NY NZ WARMUP STEPS cpu|gpu|emulated [THREADS [SKIN]]
+// SKIN (m, default the peer case's 0.2 mm) moves the neighbour rebuilds and so
+// the order of the force sums, not the physics: a way to sample how far
+// round-off alone spreads a chaotic collapse (docs/performance.md).
 // Prints one line: the backend, grains, the timed steps' wall time and
 // particle-steps per second, then kinetic energy and front at the end.
 #include <omp.h>
@@ -20,14 +23,16 @@ using namespace talus::dem;
 
 int main(int argc, char** argv) {
   if (argc < 7) {
-    std::fprintf(stderr, "usage: %s NX NY NZ WARMUP STEPS cpu|gpu|emulated [THREADS]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s NX NY NZ WARMUP STEPS cpu|gpu|emulated [THREADS [SKIN]]\n", argv[0]);
     return 2;
   }
   const int nx = std::atoi(argv[1]), ny = std::atoi(argv[2]), nz = std::atoi(argv[3]);
   const long warmup = std::atol(argv[4]), steps = std::atol(argv[5]);
   const std::string backend = argv[6];
   const int threads = argc > 7 ? std::atoi(argv[7]) : 1;
-  auto run = build_dem<3>(cases::peer_column(nx, ny, nz), {threads, false, true});
+  DemScenario sc = cases::peer_column(nx, ny, nz);
+  if (argc > 8) sc.run.skin = std::atof(argv[8]);
+  auto run = build_dem<3>(sc, {threads, false, true});
   run->system.threads = threads;
   if (backend == "gpu") run->stepper = gpu::make_stepper<3>(run->system);
   if (backend == "emulated") run->stepper = gpu::make_emulated_stepper<3>(run->system);

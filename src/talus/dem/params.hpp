@@ -115,8 +115,13 @@ struct OutputParams {
   bool write_snapshots = true;
 };
 
+// Where the steps run: the CPU stepper (dem/stepper) or the GPU backend
+// (dem_gpu/, CUDA builds only; dem/gpu_support.hpp lists what it runs).
+enum class Backend { Cpu, Gpu };
+
 struct RunParams {
   int dimension = 3;
+  Backend backend = Backend::Cpu;
   double duration = 0.0;       // s
   double time_step = 0.0;      // s; 0 = automatic (safety * critical)
   double safety_factor = 0.8;  // fraction of the critical step (PFC default)

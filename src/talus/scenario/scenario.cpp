@@ -59,6 +59,7 @@ dem::RunParams read_run(TomlReader& r, DemContext& ctx) {
   r.expect(seed >= 0 && seed <= UINT_MAX, "seed", "an integer in [0, 4294967295]");
   run.seed = static_cast<unsigned>(seed);
   run.ke_blowup_factor = number_in(r, "ke_blowup_factor", run.ke_blowup_factor, non_negative());
+  run.backend = r.enumeration("backend", detail::kBackends, run.backend);
   r.finish();
   return run;
 }

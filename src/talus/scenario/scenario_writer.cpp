@@ -52,6 +52,7 @@ class Writer {
     t["skin"] = r.skin;
     t["seed"] = static_cast<std::int64_t>(r.seed);
     t["ke_blowup_factor"] = r.ke_blowup_factor;
+    t["backend"] = name_of(detail::kBackends, r.backend);
     return t;
   }
 

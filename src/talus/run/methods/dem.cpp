@@ -7,8 +7,11 @@
 #include <fstream>
 #include <limits>
 
+#include "talus/core/error.hpp"
 #include "talus/dem/checkpoint.hpp"
+#include "talus/dem/gpu_support.hpp"
 #include "talus/dem/health.hpp"
+#include "talus/dem_gpu/backend.hpp"
 #include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 
@@ -47,6 +50,7 @@ DemSimulation<D>::DemSimulation(dem::DemScenario scenario, std::unique_ptr<dem::
       control_(dem_control(scenario)),
       scenario_(std::move(scenario)),
       threads_(threads) {
+  if (scenario_ && scenario_->run.backend == dem::Backend::Gpu) device_ = dem::gpu::device().description;
   files_ = std::make_unique<dem::DemOutputs<D>>(out, run_.system, resume, run_.system.time);
   outputs_observer_ = std::make_unique<Forward<dem::DemOutputs<D>, dem::DemRun<D>>>(*files_, run_);
 }
@@ -137,7 +141,9 @@ MethodReport DemSimulation<D>::report() const {
                 {"reference_impact_speed_m_s", s.reference_speed},
                 {"skin_m", s.skin},
                 {"settle_time_s", s.settle_time},
-                {"threads", threads_}};
+                {"threads", threads_},
+                {"backend", device_.empty() ? "cpu" : "gpu"}};
+  if (!device_.empty()) r.resolved["device"] = device_;
   r.metrics = {{"particles", p.size()},
                {"particles_removed", s.removed},
                {"kinetic_energy_J", dem::kinetic_energy(p)},
@@ -157,6 +163,16 @@ template class DemSimulation<3>;
 
 namespace {
 
+// run.backend = "gpu": refused before anything is built when the scenario uses
+// what the GPU backend lacks (the list) or no GPU is usable here.
+void check_backend(const dem::DemScenario& sc) {
+  if (sc.run.backend != dem::Backend::Gpu) return;
+  const auto missing = dem::gpu_missing_features(sc);
+  if (!missing.empty()) throw InputError(dem::gpu_refusal(sc, missing));
+  const auto device = dem::gpu::device();
+  if (!device.usable) throw InputError("run.backend = \"gpu\": " + device.description);
+}
+
 template <int D>
 std::unique_ptr<Simulation> create_dem(const dem::DemScenario& sc, const RunContext& ctx) {
   auto run = dem::build_dem<D>(sc, {ctx.threads, !ctx.resume, !ctx.resume});
@@ -164,11 +180,13 @@ std::unique_ptr<Simulation> create_dem(const dem::DemScenario& sc, const RunCont
     dem::load_checkpoint(run->system, dem::DemOutputs<D>::checkpoint_path(ctx.out));
     run->system.threads = ctx.threads;
   }
+  if (sc.run.backend == dem::Backend::Gpu) run->stepper = dem::gpu::make_stepper<D>(run->system);
   return std::make_unique<DemSimulation<D>>(sc, std::move(run), ctx.out, ctx.resume, ctx.threads);
 }
 
 template <int D>
 std::string validate_dem(const dem::DemScenario& sc) {
+  check_backend(sc);
   // Building places the particles and checks the time step, without settling.
   auto run = dem::build_dem<D>(sc, {1, false});
   return fmt::format("{}D DEM, {} particles, {} walls, time step {:.3g} s, critical {:.3g} s", D,
@@ -188,6 +206,7 @@ Method dem_method() {
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
     const auto sc = io::parse_dem_scenario(f);
+    check_backend(sc);
     if (!ctx.resume) {
       ctx.prepare();
       // The resolved scenario makes the run reproducible and resumable.

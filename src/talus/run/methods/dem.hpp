@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/friction_change.hpp"
@@ -60,6 +61,7 @@ class DemSimulation : public Simulation {
   std::unique_ptr<dem::DemOutputs<D>> files_;
   std::unique_ptr<Observer> outputs_observer_;
   int threads_ = 1;
+  std::string device_;  // the GPU it runs on; empty on the CPU
   std::int64_t end_step_ = 0, change_step_ = 0, health_every_ = 1;
   bool changed_before_ = false;
   double available_ = 0.0;
