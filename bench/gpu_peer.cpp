@@ -23,7 +23,8 @@ using namespace talus::dem;
 
 int main(int argc, char** argv) {
   if (argc < 7) {
-    std::fprintf(stderr, "usage: %s NX NY NZ WARMUP STEPS cpu|gpu|emulated [THREADS [SKIN]]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s NX NY NZ WARMUP STEPS cpu|gpu|emulated [THREADS [SKIN]]\n",
+                 argv[0]);
     return 2;
   }
   const int nx = std::atoi(argv[1]), ny = std::atoi(argv[2]), nz = std::atoi(argv[3]);

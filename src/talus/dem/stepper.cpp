@@ -20,6 +20,7 @@
 #include "talus/dem/membrane/membrane_step.hpp"
 #include "talus/dem/pair_kinematics.hpp"
 #include "talus/dem/thread_partition.hpp"
+#include "talus/dem/wall_contact.hpp"
 #include "talus/dem/wall_motion.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
 
@@ -36,14 +37,12 @@ class Stepper final : public StepperBase<D> {
   explicit Stepper(DemSystem<D>& s) : s_(s) {
     const int m = static_cast<int>(s.materials.size());
     n_materials_ = m;
-    coeffs_.resize(m * m);
+    coeffs_ = coefficient_table<Model>(s.contact, s.materials);
     friction_.resize(m * m);
     for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b) {
-        coeffs_[a * m + b] = Model::make(s.contact, s.materials[a], s.materials[b]);
+      for (int b = 0; b < m; ++b)
         friction_[a * m + b] =
             pair_coefficients(s.contact, s.materials[a], s.materials[b]).friction;
-      }
     if constexpr (kHertzBlocks || kLinearBlocks)
       for (const auto& c : coeffs_) coeffs_law_.push_back(c.law);
     kuen_ = KuenRolling(s.contact, s.gravity.norm());
@@ -502,26 +501,14 @@ class Stepper final : public StepperBase<D> {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
     const int w = s_.primitive_wall[nl.wall_prim[k]];
-    ContactKinematics<D> kin;
-    kin.n = c.normal;
-    kin.overlap = p.r[i] - c.distance;
-    const double ci = p.r[i] - 0.5 * kin.overlap;
-    kin.r_eff = p.r[i];
-    kin.m_eff = p.m[i];
-    kin.inertia_eff = 1.0 / p.inv_I[i] + p.m[i] * p.r[i] * p.r[i];
-    Vec vrel = p.v[i];
+    Vec v_wall;
     if (moving_[w])
-      vrel -= Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
-    kin.vn = vrel.dot(kin.n);
-    kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * p.w[i], kin.n);
-    kin.w_rel = p.w[i];
+      v_wall = Space<D>::from3(s_.walls[w].velocity_at(Space<D>::to3(c.point), s_.time));
+    const WallTouch<D> touch = wall_touch<D>(p, i, c, moving_[w] ? &v_wall : nullptr);
     ContactForce<D> cf;
-    Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], kin,
+    Model::compute(coeffs_[p.material[i] * n_materials_ + s_.walls[w].material], touch.kin,
                    nl.wall_history[k], s_.dt, cf);
-    const Vec f = cf.fn * kin.n + cf.ft;
-    p.f[i] += f;
-    p.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
-    ++p.wall_contacts[i];
+    const Vec f = apply_wall_force<D>(p, i, touch, cf);
     const Vec3 f3 = Space<D>::to3(f);
     acc[2 * w] -= f3;
     acc[2 * w + 1] -= (Space<D>::to3(c.point) - pivots_[w]).cross(f3);

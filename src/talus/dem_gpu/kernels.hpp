@@ -9,6 +9,7 @@
 #include "talus/dem/contact/kinematics.hpp"
 #include "talus/dem/kick.hpp"
 #include "talus/dem/pair_kinematics.hpp"
+#include "talus/dem/wall_contact.hpp"
 #include "talus/geometry/primitive.hpp"
 
 namespace talus::dem::gpu_detail {
@@ -205,28 +206,16 @@ struct WallForces {
         h = ContactHistory<D>{};
         continue;
       }
-      ContactKinematics<D> kin;
-      kin.n = c.normal;
-      kin.overlap = q.r[i] - c.distance;
-      const double ci = q.r[i] - 0.5 * kin.overlap;
-      kin.r_eff = q.r[i];
-      kin.m_eff = q.m[i];
-      kin.inertia_eff = 1.0 / q.inv_I[i] + q.m[i] * q.r[i] * q.r[i];
-      Vec vrel = q.v[i];
+      Vec v_wall;
       if (walls[w].moving) {
         const Vec3 at = Space<D>::to3(c.point);
-        vrel -= Space<D>::from3(Vec3(walls[w].v0 + walls[w].omega.cross(at - walls[w].pivot)));
+        v_wall = Space<D>::from3(Vec3(walls[w].v0 + walls[w].omega.cross(at - walls[w].pivot)));
       }
-      kin.vn = vrel.dot(kin.n);
-      kin.vt = vrel - kin.vn * kin.n - Space<D>::cross(ci * q.w[i], kin.n);
-      kin.w_rel = q.w[i];
+      const WallTouch<D> touch = wall_touch<D>(q, i, c, walls[w].moving ? &v_wall : nullptr);
       ContactForce<D> cf;
-      Model::template compute<D>(coeffs[q.material[i] * n_materials + walls[w].material], kin, h,
-                                 dt, cf);
-      const Vec f = cf.fn * kin.n + cf.ft;
-      q.f[i] += f;
-      q.t[i] += ci * (-Space<D>::cross(kin.n, cf.ft)) + cf.roll_torque;
-      ++q.wall_contacts[i];
+      Model::template compute<D>(coeffs[q.material[i] * n_materials + walls[w].material], touch.kin,
+                                 h, dt, cf);
+      const Vec f = apply_wall_force<D>(q, i, touch, cf);
       const Vec3 f3 = Space<D>::to3(f);
       add_to(&wall_sum[2 * w], Vec3(-f3));
       add_to(&wall_sum[2 * w + 1], Vec3(-(Space<D>::to3(c.point) - walls[w].pivot).cross(f3)));

@@ -4,13 +4,13 @@
 // (the run loop's output times). Included by stepper_cuda.cu (nvcc: CUDA) and
 // stepper_emulated.cpp (g++: Thrust's serial host backend, which the tests
 // run on machines without a GPU); TALUS_GPU_NS names the namespace of each.
+#include <thrust/binary_search.h>
 #include <thrust/count.h>
 #include <thrust/device_vector.h>
 #include <thrust/execution_policy.h>
 #include <thrust/gather.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/reduce.h>
-#include <thrust/binary_search.h>
 #include <thrust/scan.h>
 #include <thrust/sort.h>
 #include <thrust/transform_reduce.h>
@@ -259,12 +259,8 @@ class GpuStepper final : public StepperBase<D> {
 
  private:
   void make_coefficients() {
-    const int m = static_cast<int>(s_.materials.size());
-    n_materials_ = m;
-    coeffs_host_.assign(m * m, {});
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b)
-        coeffs_host_[a * m + b] = Model::make(s_.contact, s_.materials[a], s_.materials[b]);
+    n_materials_ = static_cast<int>(s_.materials.size());
+    coeffs_host_ = coefficient_table<Model>(s_.contact, s_.materials);
     to_device(coeffs_host_, coeffs_);
   }
 
@@ -411,8 +407,18 @@ class GpuStepper final : public StepperBase<D> {
   }
 
   ParticleView<D> view() {
-    return {raw(x_),      raw(v_),  raw(f_),     raw(x_ref_), raw(w_),        raw(t_),
-            raw(r_),      raw(m_),  raw(inv_m_), raw(inv_I_), raw(material_), raw(contacts_),
+    return {raw(x_),
+            raw(v_),
+            raw(f_),
+            raw(x_ref_),
+            raw(w_),
+            raw(t_),
+            raw(r_),
+            raw(m_),
+            raw(inv_m_),
+            raw(inv_I_),
+            raw(material_),
+            raw(contacts_),
             raw(wall_contacts_)};
   }
 
@@ -425,13 +431,13 @@ class GpuStepper final : public StepperBase<D> {
   void one_step() {
     const double dt = s_.dt, half_skin = 0.5 * s_.skin;
     timer_.start(Phase::KickDrift);
-    thrust::for_each_n(policy(), thrust::counting_iterator<int>(0), n_,
-                       KickDrift<D>{view(), half_kick(), dt, half_skin * half_skin,
-                                    raw(rebuild_flag_)});
+    thrust::for_each_n(
+        policy(), thrust::counting_iterator<int>(0), n_,
+        KickDrift<D>{view(), half_kick(), dt, half_skin * half_skin, raw(rebuild_flag_)});
     s_.time = static_cast<double>(s_.step + 1) * dt;
     const bool walls_changed = update_walls(false);
-    const double wall_moved = wall_motion_since(s_.walls, s_.time, s_.wall_displacement_at_build,
-                                                s_.wall_angle_at_build);
+    const double wall_moved =
+        wall_motion_since(s_.walls, s_.time, s_.wall_displacement_at_build, s_.wall_angle_at_build);
     const int moved_far = rebuild_flag_[0];  // waits for the kernel
     timer_.start(Phase::Rebuild);
     if (walls_changed || moved_far || wall_moved > half_skin) rebuild_on_device();
@@ -444,9 +450,8 @@ class GpuStepper final : public StepperBase<D> {
 
   void forces(bool then_kick) {
     const int np = static_cast<int>(pair_j_.size());
-    const PairForces<D, Model> pairs{view(),           raw(pair_i_),  raw(pair_j_),
-                                     raw(pair_shear_), raw(pair_roll_), raw(coeffs_),
-                                     n_materials_,     s_.dt};
+    const PairForces<D, Model> pairs{view(),          raw(pair_i_), raw(pair_j_), raw(pair_shear_),
+                                     raw(pair_roll_), raw(coeffs_), n_materials_, s_.dt};
     timer_.start(Phase::Pairs);
     if (row_loop_)
       thrust::for_each_n(policy(), thrust::counting_iterator<int>(0), n_,
@@ -454,11 +459,11 @@ class GpuStepper final : public StepperBase<D> {
     else
       thrust::for_each_n(policy(), thrust::counting_iterator<int>(0), np, pairs);
     timer_.start(Phase::Walls);
-    thrust::for_each_n(policy(), thrust::counting_iterator<int>(0), n_,
-                       WallForces<D, Model>{view(), raw(prims_), raw(prim_wall_), n_prims_,
-                                            raw(wall_state_), raw(wall_history_), raw(coeffs_),
-                                            n_materials_, s_.dt, raw(wall_sum_), half_kick(),
-                                            then_kick});
+    thrust::for_each_n(
+        policy(), thrust::counting_iterator<int>(0), n_,
+        WallForces<D, Model>{view(), raw(prims_), raw(prim_wall_), n_prims_, raw(wall_state_),
+                             raw(wall_history_), raw(coeffs_), n_materials_, s_.dt, raw(wall_sum_),
+                             half_kick(), then_kick});
   }
 
   void close_walls(bool close_step) {
@@ -482,8 +487,8 @@ class GpuStepper final : public StepperBase<D> {
         moved = true;
       }
       const Vec3 pivot = w.pivot_at(t);
-      state[k] = {pivot, w.velocity_at(pivot, t), w.angular_velocity_at(t), w.material,
-                  w.active(t) ? 1 : 0, w.moves() ? 1 : 0};
+      state[k] = {pivot,      w.velocity_at(pivot, t), w.angular_velocity_at(t),
+                  w.material, w.active(t) ? 1 : 0,     w.moves() ? 1 : 0};
       if (k < active_.size() && active_[k] != state[k].active) changed = true;
       for (const auto& prim : w.current) {
         prims.push_back(prim);
@@ -553,9 +558,9 @@ class GpuStepper final : public StepperBase<D> {
     gather(order_, kept, wall_contacts_, scratch_int_);
     gather(order_, kept, id_, scratch_id_);
     scratch_history_.resize(static_cast<std::size_t>(kept) * n_prims_);
-    thrust::for_each_n(policy(), thrust::counting_iterator<int>(0), kept,
-                       GatherWallHistory<D>{raw(wall_history_), raw(scratch_history_), raw(order_),
-                                            n_prims_});
+    thrust::for_each_n(
+        policy(), thrust::counting_iterator<int>(0), kept,
+        GatherWallHistory<D>{raw(wall_history_), raw(scratch_history_), raw(order_), n_prims_});
     wall_history_.swap(scratch_history_);
     keys_.resize(kept);
     n_ = kept;
@@ -570,10 +575,10 @@ class GpuStepper final : public StepperBase<D> {
     old_roll_.swap(pair_roll_);
     const bool carry = have_previous_;
     count_.resize(n + 1);
-    FindPairs<D> find{raw(x_),  raw(r_),      raw(keys_), n,       grid,     s_.skin,
-                      raw(count_), nullptr,   nullptr,    nullptr, nullptr,  nullptr,
-                      raw(order_), raw(old_row_), raw(old_j_), raw(old_shear_), raw(old_roll_),
-                      carry};
+    FindPairs<D> find{
+        raw(x_),     raw(r_),         raw(keys_),     n,       grid,    s_.skin,     raw(count_),
+        nullptr,     nullptr,         nullptr,        nullptr, nullptr, raw(order_), raw(old_row_),
+        raw(old_j_), raw(old_shear_), raw(old_roll_), carry};
     thrust::for_each_n(policy(), thrust::counting_iterator<int>(0), n, find);
     count_[n] = 0;
     row_start_.resize(n + 1);

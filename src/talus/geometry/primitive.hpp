@@ -69,7 +69,8 @@ TALUS_HD inline Vec3 perpendicular(const Vec3& a) {
 // Fills out from a nearest point q; when x lies on the primitive the direction
 // is undefined and fallback() (a unit vector) is used.
 template <int D, class V, class Fallback>
-TALUS_HD inline bool finish(const V& x, const V& q, Fallback fallback, double cutoff, Closest<D>& out) {
+TALUS_HD inline bool finish(const V& x, const V& q, Fallback fallback, double cutoff,
+                            Closest<D>& out) {
   const V diff = x - q;
   const double d = diff.norm();
   if (d > cutoff) return false;
@@ -80,8 +81,8 @@ TALUS_HD inline bool finish(const V& x, const V& q, Fallback fallback, double cu
 }
 
 template <int D>
-TALUS_HD inline bool closest_segment(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
-                            Closest<D>& out) {
+TALUS_HD inline bool closest_segment(const Primitive& p, const typename Space<D>::Vec& x,
+                                     double cutoff, Closest<D>& out) {
   using V = typename Space<D>::Vec;
   const V a = Space<D>::from3(p.p0), b = Space<D>::from3(p.p1);
   const V ab = b - a;
@@ -96,7 +97,7 @@ TALUS_HD inline bool closest_segment(const Primitive& p, const typename Space<D>
 // polar angle phi the distance to the circle point at theta grows with
 // |theta - phi| (mod 2 pi), so the nearest arc point is an end point.
 TALUS_HD inline bool closest_arc(const Primitive& p, const Eigen::Vector2d& x, double cutoff,
-                        Closest<2>& out) {
+                                 Closest<2>& out) {
   using V = Eigen::Vector2d;
   const V c = Space<2>::from3(p.p0);
   const V rel = x - c;
@@ -125,8 +126,8 @@ TALUS_HD inline bool closest_arc(const Primitive& p, const Eigen::Vector2d& x, d
 }
 
 template <int D>
-TALUS_HD inline bool closest_plane(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
-                          Closest<D>& out) {
+TALUS_HD inline bool closest_plane(const Primitive& p, const typename Space<D>::Vec& x,
+                                   double cutoff, Closest<D>& out) {
   using V = typename Space<D>::Vec;
   const V n = Space<D>::from3(p.n);
   const double s = (x - Space<D>::from3(p.p0)).dot(n);
@@ -140,7 +141,8 @@ TALUS_HD inline bool closest_plane(const Primitive& p, const typename Space<D>::
 
 // Ericson, Real-Time Collision Detection (2005) 5.1.5: Voronoi regions of the
 // vertices, then the edges, else the face.
-TALUS_HD inline bool closest_triangle(const Primitive& p, const Vec3& x, double cutoff, Closest<3>& out) {
+TALUS_HD inline bool closest_triangle(const Primitive& p, const Vec3& x, double cutoff,
+                                      Closest<3>& out) {
   const Vec3 &a = p.p0, &b = p.p1, &c = p.p2;
   const double s = (x - a).dot(p.n);
   if (std::abs(s) > cutoff) return false;  // the plane is never farther than the triangle
@@ -178,7 +180,8 @@ TALUS_HD inline bool closest_triangle(const Primitive& p, const Vec3& x, double 
 // `normal` always points into the particle side. A centre more than cutoff
 // beyond the surface has passed through and is not in contact. Past the ends
 // of a finite cylinder the nearest point is on the rim circle (open ends).
-TALUS_HD inline bool closest_cylinder(const Primitive& p, const Vec3& x, double cutoff, Closest<3>& out) {
+TALUS_HD inline bool closest_cylinder(const Primitive& p, const Vec3& x, double cutoff,
+                                      Closest<3>& out) {
   const Vec3 rel = x - p.p0;
   const double axial = rel.dot(p.n);
   const Vec3 radial_vec = rel - axial * p.n;
@@ -204,8 +207,8 @@ TALUS_HD inline bool closest_cylinder(const Primitive& p, const Vec3& x, double 
 // (out is then unspecified). 2D: Segment, Arc, Plane (the line through p0 with
 // normal n). 3D: Plane, Triangle, Cylinder, Segment. Other combinations: false.
 template <int D>
-TALUS_HD inline bool closest_point(const Primitive& p, const typename Space<D>::Vec& x, double cutoff,
-                          Closest<D>& out) {
+TALUS_HD inline bool closest_point(const Primitive& p, const typename Space<D>::Vec& x,
+                                   double cutoff, Closest<D>& out) {
   switch (p.kind) {
     case PrimitiveKind::Segment:
       return detail::closest_segment<D>(p, x, cutoff, out);

@@ -24,7 +24,7 @@ namespace talus::io::detail {
 // The file's names of the enumerated options; the first one is listed first
 // in messages, the writer maps values back to these names.
 inline const EnumNames<dem::Backend> kBackends = {{"cpu", dem::Backend::Cpu},
-                                                 {"gpu", dem::Backend::Gpu}};
+                                                  {"gpu", dem::Backend::Gpu}};
 inline const EnumNames<dem::RollingModel> kRollingModels = {{"none", dem::RollingModel::None},
                                                             {"epsd", dem::RollingModel::Epsd},
                                                             {"kuen", dem::RollingModel::Kuen}};

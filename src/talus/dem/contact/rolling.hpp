@@ -2,6 +2,7 @@
 // Rolling resistance acting per contact. Kuen's model is not here: it changes
 // the angular velocity of particles, not contact torques (see dem/kuen_rolling.hpp).
 #include <cmath>
+#include <vector>
 
 #include "talus/dem/contact/kinematics.hpp"
 #include "talus/dem/contact/pair_coefficients.hpp"
@@ -81,5 +82,18 @@ struct ComposedContact {
     return Law::critical_time_step(c.law, m_eff, r_eff, v_ref);
   }
 };
+
+// A model's coefficients for every pair of materials, row-major by the
+// first material's index (the steppers' lookup table).
+template <class Model>
+std::vector<typename Model::Coeffs> coefficient_table(
+    const ContactParams& cp, const std::vector<MaterialParams>& materials) {
+  const std::size_t m = materials.size();
+  std::vector<typename Model::Coeffs> table(m * m);
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = 0; b < m; ++b)
+      table[a * m + b] = Model::make(cp, materials[a], materials[b]);
+  return table;
+}
 
 }  // namespace talus::dem

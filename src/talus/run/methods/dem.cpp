@@ -50,7 +50,8 @@ DemSimulation<D>::DemSimulation(dem::DemScenario scenario, std::unique_ptr<dem::
       control_(dem_control(scenario)),
       scenario_(std::move(scenario)),
       threads_(threads) {
-  if (scenario_ && scenario_->run.backend == dem::Backend::Gpu) device_ = dem::gpu::device().description;
+  if (scenario_ && scenario_->run.backend == dem::Backend::Gpu)
+    device_ = dem::gpu::device().description;
   files_ = std::make_unique<dem::DemOutputs<D>>(out, run_.system, resume, run_.system.time);
   outputs_observer_ = std::make_unique<Forward<dem::DemOutputs<D>, dem::DemRun<D>>>(*files_, run_);
 }
