@@ -35,8 +35,7 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
   if (method == "dem") {
     const auto sc = io::parse_dem_scenario(file);
     if (!sc.flume) throw InputError(path + ": the DEM scenario of a comparison needs a [flume]");
-    const auto& f = *sc.flume;
-    return geometry::make_flume(f);
+    return geometry::make_flume(sc.flume->shape);
   }
   if (method == "dan") {
     const auto sc = io::parse_runout_scenario(file);
@@ -44,7 +43,7 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
       throw InputError(path +
                        ": the DAN scenario of a comparison needs model = \"dan\" on a "
                        "[path] of type \"flume\"");
-    return runout::flume_of(sc.path);
+    return geometry::make_flume(sc.path.flume);
   }
   if (method == "mpm") {
     const auto sc = io::parse_mpm_scenario(file);
@@ -52,7 +51,7 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
       throw InputError(path +
                        ": the MPM scenario of a comparison needs a [flume] with a "
                        "[flume.release]");
-    return mpm::flume_geometry(*sc.flume);
+    return geometry::make_flume(sc.flume->shape);
   }
   throw InputError(
       fmt::format("{}: method '{}' cannot take part in a flume comparison yet", path, method));

@@ -8,7 +8,8 @@
 namespace talus::analysis {
 namespace {
 
-const geometry::FlumeGeometry kA = geometry::make_flume(33.0, 0.10);  // geometry A
+const geometry::FlumeGeometry kA =
+    geometry::make_flume({deg2rad(33.0), 0.10, {}, {}});  // geometry A
 
 // A grain of radius r resting on the bed at path coordinate s, lifted by h.
 void put(Grains& g, double s, double r, double h = 0.0) {

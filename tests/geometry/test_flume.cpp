@@ -39,7 +39,7 @@ Vec2 intersect(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
 TEST(Flume, ReproducesEveryRowOfTheCorrectedTable) {
   for (const Row& row : kRows) {
     SCOPED_TRACE(testing::Message() << "beta " << row.beta << " R " << row.radius);
-    const FlumeGeometry f = make_flume(row.beta, row.radius);
+    const FlumeGeometry f = make_flume({deg2rad(row.beta), row.radius, {}, {}});
     EXPECT_NEAR((f.chute_start - Vec2(0, 1.115)).norm(), 0, 1e-12);
     EXPECT_LT((f.chute_end - row.w1_end).norm(), kHalfMm);
     EXPECT_LT((f.arc_centre - row.w2_centre).norm(), kHalfMm);
@@ -59,7 +59,7 @@ TEST(Flume, ReproducesEveryRowOfTheCorrectedTable) {
 }
 
 TEST(Flume, GateLidAndReleaseTriangle) {
-  const FlumeGeometry f = make_flume(33, 0.10);
+  const FlumeGeometry f = make_flume({deg2rad(33), 0.10, {}, {}});
   // Table 3: W4 (0.5276, 0.8226)-(0.5276, 1.1150), W5 to (0, 1.1150).
   EXPECT_LT((f.gate_bottom - Vec2(0.5276, 0.8226)).norm(), kHalfMm);
   EXPECT_NEAR((f.gate_top - Vec2(0.5276, 1.1150)).norm(), 0, 1e-12);
@@ -71,7 +71,7 @@ TEST(Flume, GateLidAndReleaseTriangle) {
 }
 
 TEST(Flume, PathCoordinateAlongChuteArcAndBarrier) {
-  const FlumeGeometry f = make_flume(33, 0.10);
+  const FlumeGeometry f = make_flume({deg2rad(33), 0.10, {}, {}});
   // s = 0 at the gate foot; the chute top is 0.5276 / cos 29 deg = 0.603227 upstream.
   EXPECT_NEAR(f.chute_start_s(), -0.5276 / std::cos(deg2rad(29)), 1e-12);
   EXPECT_NEAR((f.point_at(0) - f.gate_bottom).norm(), 0, 1e-12);
@@ -104,7 +104,7 @@ TEST(Flume, OtherGeometriesInterpolateOrTakeExplicitValues) {
   EXPECT_NEAR(flume_l_star(45, 0.10), 1.7163 + 12.0 / 28 * (1.7570 - 1.7163), 1e-12);
   EXPECT_NEAR(flume_l_star(3, 0.10), 1.6875, 1e-12);   // below the first row
   EXPECT_NEAR(flume_l_star(33, 0.05), 1.7163, 1e-12);  // R = 0.10 rows are the reference
-  const FlumeGeometry f = make_flume(45, 0.05, 1.8, 1.0);
+  const FlumeGeometry f = make_flume({deg2rad(45), 0.05, 1.8, 1.0});
   EXPECT_NEAR(f.l_star, 1.8, 0);
   const Vec2 corner = intersect(f.chute_start, f.chute_end, f.barrier_start, f.barrier_end);
   EXPECT_NEAR((corner - f.chute_start).norm(), 1.8, 1e-12);
@@ -112,15 +112,16 @@ TEST(Flume, OtherGeometriesInterpolateOrTakeExplicitValues) {
 }
 
 TEST(Flume, RejectsGeometriesThatDoNotFit) {
-  EXPECT_THROW(make_flume(0, 0.1), InputError);
-  EXPECT_THROW(make_flume(95, 0.1), InputError);
-  EXPECT_THROW(make_flume(33, 0), InputError);
-  EXPECT_THROW(make_flume(33, 2.0), InputError);  // arc would start above the gate
-  EXPECT_THROW(make_flume(33, 0.1, std::nullopt, 0.01), InputError);
+  EXPECT_THROW(make_flume({deg2rad(0), 0.1, {}, {}}), InputError);
+  EXPECT_THROW(make_flume({deg2rad(95), 0.1, {}, {}}), InputError);
+  EXPECT_THROW(make_flume({deg2rad(33), 0, {}, {}}), InputError);
+  EXPECT_THROW(make_flume({deg2rad(33), 2.0, {}, {}}),
+               InputError);  // arc would start above the gate
+  EXPECT_THROW(make_flume({deg2rad(33), 0.1, std::nullopt, 0.01}), InputError);
 }
 
 TEST(Flume, WallParamsBuildTwoDimensionalWallsOnThePath) {
-  const FlumeGeometry f = make_flume(7, 0.10);
+  const FlumeGeometry f = make_flume({deg2rad(7), 0.10, {}, {}});
   const FlumeWalls w = f.walls("metal");
   for (const WallParams* p : {&w.chute, &w.arc, &w.barrier, &w.gate, &w.lid}) {
     EXPECT_EQ(p->material, "metal");

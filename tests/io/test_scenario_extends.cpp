@@ -126,13 +126,13 @@ TEST(ScenarioExtends, BundledFlumeVariantsDifferOnlyWhereTheySay) {
   EXPECT_EQ(a1.contact.rolling, dem::RollingModel::None);
   EXPECT_FALSE(a3.contact.lock_rotation);
   EXPECT_EQ(a3.contact.rolling, dem::RollingModel::Kuen);
-  EXPECT_NEAR(c3.flume->beta * 180 / M_PI, 61.0, 1e-12);
+  EXPECT_NEAR(c3.flume->shape.beta * 180 / M_PI, 61.0, 1e-12);
   EXPECT_EQ(c3.sources[0].count, a3.sources[0].count);
   EXPECT_DOUBLE_EQ(c3.materials[0].friction, a3.materials[0].friction);
   // Kuen §6 ran the particle sizes on Model 3, geometry A, variant II (gate lifted).
   for (const char* name : {"flume_A_scale2.toml", "flume_A_scale20.toml"}) {
     const auto sc = parse_dem_scenario(load_scenario_file(dir + name, {}));
-    EXPECT_DOUBLE_EQ(sc.flume->beta, a3.flume->beta) << name;
+    EXPECT_DOUBLE_EQ(sc.flume->shape.beta, a3.flume->shape.beta) << name;
     EXPECT_EQ(sc.contact.rolling, dem::RollingModel::Kuen) << name;
     EXPECT_TRUE(sc.flume->lift_gate) << name;
     EXPECT_DOUBLE_EQ(sc.flume->gate_speed, a3.flume->gate_speed) << name;

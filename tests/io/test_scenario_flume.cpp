@@ -84,7 +84,7 @@ material = "m"
   const auto s = parse_text(text);
   EXPECT_EQ(wall(s, "gate").motion.remove_at, 0.0);
   EXPECT_EQ(wall(s, "gate").motion.velocity.norm(), 0.0);
-  EXPECT_NEAR(*s.flume->l_star, 1.7163, 1e-12);  // Table 2, 33 deg, 0.10 m
+  EXPECT_NEAR(*s.flume->shape.l_star, 1.7163, 1e-12);  // Table 2, 33 deg, 0.10 m
   const std::string written = scenario_to_toml(s);
   EXPECT_NE(written.find("[flume]"), std::string::npos);
   EXPECT_EQ(written.find("[[walls]]"), std::string::npos);  // generated walls stay in [flume]

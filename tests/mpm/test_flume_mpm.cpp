@@ -78,7 +78,7 @@ TEST(MpmFlumeWall, BlockSlidesDownInclinedFrictionWallAtCoulombAcceleration) {
 // its row depth below the bed line, on the arc at R + depth from the centre
 // (exact geometry), with the bed normal of its column.
 TEST(MpmFlumeWall, BedParticlesLieTheirDepthBelowTheBed) {
-  const auto g = geometry::make_flume(33.0, 0.10);
+  const auto g = geometry::make_flume({deg2rad(33.0), 0.10, {}, {}});
   const double dx = 0.0025;
   const auto bed = flume_bed(g, dx, 3, 0.4);
   ASSERT_EQ(bed.x.size() % 3, 0u);
@@ -105,7 +105,7 @@ TEST(MpmFlumeWall, BedParticlesLieTheirDepthBelowTheBed) {
 // Lattice cells whose centre is inside: n dx^2 differs from the area by less
 // than the cells the edges cut, perimeter * dx.
 TEST(MpmFlume, ReleaseTriangleFilledToItsArea) {
-  const auto g = geometry::make_flume(33.0, 0.10);
+  const auto g = geometry::make_flume({deg2rad(33.0), 0.10, {}, {}});
   const double dx = 0.0025;
   const auto points = fill_triangle(g.release[0], g.release[1], g.release[2], dx, Vec2(-0.05, 0));
   const double perimeter = (g.release[1] - g.release[0]).norm() +

@@ -291,7 +291,7 @@ TEST(MpmScenario, FlumeParsesRoundTripsAndBuilds) {
   EXPECT_EQ(sc.flume->release_material_index, 0);
   EXPECT_TRUE(sc.bodies.empty());  // the release fills the triangle instead
   // Kuen's Table 2 row for 33 deg, R = 0.10 (flume.hpp) is resolved into the file.
-  EXPECT_GT(*sc.flume->l_star, 1.0);
+  EXPECT_GT(*sc.flume->shape.l_star, 1.0);
   const auto again =
       parse_mpm_scenario(load_scenario_text(mpm_scenario_to_toml(sc), "resolved.toml"));
   EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
@@ -300,7 +300,7 @@ TEST(MpmScenario, FlumeParsesRoundTripsAndBuilds) {
   EXPECT_NEAR(solver.rigid_bodies[0].friction, std::tan(21.7 * M_PI / 180.0), 1e-15);
   // Release area (flume.hpp) over the point area (10 mm spacing), within the
   // lattice cells the triangle's edges cut.
-  const auto g = mpm::flume_geometry(*sc.flume);
+  const auto g = geometry::make_flume(sc.flume->shape);
   EXPECT_NEAR(solver.particles.size() * 1e-4, g.release_area(), 3.0 * 0.01);
 
   expect_error(edit(kFlume, "release = { material = \"sand\" }", ""), "'bodies'");

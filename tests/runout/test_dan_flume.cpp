@@ -35,7 +35,7 @@ FlumeRun run_flume(std::size_t blocks, double courant) {
 }
 
 TEST(DanFlume, RunsAndReportsFlumeResults) {
-  const auto flume = geometry::make_flume(33, 0.10);
+  const auto flume = geometry::make_flume({deg2rad(33), 0.10, {}, {}});
   const FlumeRun r = run_flume(100, 0.5);
   // Released volume per metre: the triangle behind the gate, 0.07714 m^2
   // (flume.md), kept to round-off.

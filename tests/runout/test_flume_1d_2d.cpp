@@ -160,7 +160,7 @@ Outcome run_fv2d_flume(const RunoutScenario& sc, const ExtrudedPath& grid, const
 
 TEST(FlumeOneDTwoD, FrontRunUpAndDepositAgree) {
   const RunoutScenario sc = flume_scenario();
-  const auto flume = flume_of(sc.path);
+  const auto flume = geometry::make_flume(sc.path.flume);
   const RunoutPath path = build_path(sc.path);
   const std::vector<Vec2> triangle = {flume.release[0], flume.release[1], flume.release[2]};
   const ExtrudedPath grid = extrude_path(path, flume.chute_start.x(), flume.barrier_end.x(), kDx,

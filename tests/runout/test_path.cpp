@@ -10,7 +10,7 @@ namespace talus::runout {
 namespace {
 
 TEST(RunoutPath, FlumeFollowsFlumeGeometry) {
-  const auto flume = geometry::make_flume(33, 0.10);
+  const auto flume = geometry::make_flume({deg2rad(33), 0.10, {}, {}});
   const auto path = path_from_flume(flume, 0.35, 1e-3);
   EXPECT_DOUBLE_EQ(path.s_begin(), flume.chute_start_s());
   EXPECT_NEAR(path.s_end(), flume.path_end_s(), 1e-12);

@@ -106,7 +106,7 @@ Grains FlumeObserver::grains(const dem::DemSystem<2>& system) const {
 
 void FlumeObserver::on_series(const dem::DemRun<2>& run) {
   const auto& s = run.system;
-  const FrontSample f = measure_front(geometry_, grains(s), params_.front_quantile);
+  const FrontSample f = measure_front(geometry_, grains(s), params_.measures.front_quantile);
   std::vector<double> row = {s.time,
                              f.front_s,
                              f.front.x(),
@@ -162,7 +162,7 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
   front_->flush();
   const auto& s = run.system;
   const Grains g = grains(s);
-  const auto profile = deposit_profile(geometry_, g, params_.profile_bin);
+  const auto profile = deposit_profile(geometry_, g, params_.measures.profile_bin);
   {
     io::CsvSeries out(dir_ / "deposit_profile.csv",
                       {"s_low", "s_high", "count", "thickness", "surface_x", "surface_y"}, false);
@@ -190,11 +190,11 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
   }
   if (!s.particles.r.empty()) mean_diameter /= static_cast<double>(s.particles.size());
   const double tail_thickness =
-      params_.tail_thickness > 0 ? params_.tail_thickness : 3.0 * mean_diameter;
+      params_.measures.tail_thickness > 0 ? params_.measures.tail_thickness : 3.0 * mean_diameter;
   const double tail = deposit_tail(profile, tail_thickness);
   int stranded = 0;
   for (const Vec2& x : g.x) stranded += geometry_.path_coordinate(x) < tail ? 1 : 0;
-  const FrontSample last = measure_front(geometry_, g, params_.front_quantile);
+  const FrontSample last = measure_front(geometry_, g, params_.measures.front_quantile);
 
   const auto table = io::read_csv(dir_ / "front.csv");
   const auto sum = summarise_front_series(geometry_, table.columns, table.rows, 0.1);
@@ -203,7 +203,7 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
                {"arc_end_s", geometry_.arc_end_s()},
                {"path_end_s", geometry_.path_end_s()},
                {"bed_low_y", bed_low_point(geometry_)}};
-  j["front"] = {{"quantile", params_.front_quantile},
+  j["front"] = {{"quantile", params_.measures.front_quantile},
                 {"reach_arc_time", sum.reach_arc_time},
                 {"reach_barrier_time", sum.reach_barrier_time},
                 {"final_s", last.front_s}};

@@ -15,7 +15,9 @@ const std::vector<std::string> kFrontColumns = {"time",    "front_s",      "fron
 
 MpmFlumeObserver::MpmFlumeObserver(std::filesystem::path out, const mpm::MpmFlumeParams& params,
                                    const mpm::Solver<2>& s, bool resume, double resume_time)
-    : dir_(std::move(out) / "flume"), geometry_(flume_geometry(params)), params_(params) {
+    : dir_(std::move(out) / "flume"),
+      geometry_(geometry::make_flume(params.shape)),
+      params_(params) {
   std::filesystem::create_directories(dir_);
   double volume = 0.0;
   for (double v : s.particles.volume0) volume += v;
@@ -34,7 +36,7 @@ analysis::Grains MpmFlumeObserver::grains(const mpm::Solver<2>& s) const {
 }
 
 void MpmFlumeObserver::on_series(const mpm::Solver<2>& s) {
-  const auto f = analysis::measure_front(geometry_, grains(s), params_.front_quantile);
+  const auto f = analysis::measure_front(geometry_, grains(s), params_.measures.front_quantile);
   front_->row({s.time, f.front_s, f.front.x(), f.front.y(), f.runup_s, f.runup_height,
                static_cast<double>(f.on_chute)});
 }
@@ -44,7 +46,7 @@ void MpmFlumeObserver::on_checkpoint(const mpm::Solver<2>&) { front_->flush(); }
 nlohmann::json MpmFlumeObserver::finish(const mpm::Solver<2>& s) {
   front_->flush();
   const analysis::Grains g = grains(s);
-  const auto profile = analysis::deposit_profile(geometry_, g, params_.profile_bin);
+  const auto profile = analysis::deposit_profile(geometry_, g, params_.measures.profile_bin);
   {
     io::CsvSeries out(dir_ / "deposit_profile.csv",
                       {"s_low", "s_high", "count", "thickness", "surface_x", "surface_y"}, false);
@@ -63,11 +65,11 @@ nlohmann::json MpmFlumeObserver::finish(const mpm::Solver<2>& s) {
   }
   // Three point spacings: the MPM's analogue of the DEM's three grain diameters.
   const double tail_thickness =
-      params_.tail_thickness > 0 ? params_.tail_thickness : 3.0 * spacing_;
+      params_.measures.tail_thickness > 0 ? params_.measures.tail_thickness : 3.0 * spacing_;
   const double tail = analysis::deposit_tail(profile, tail_thickness);
   int stranded = 0;
   for (const auto& x : g.x) stranded += geometry_.path_coordinate(x) < tail ? 1 : 0;
-  const auto last = analysis::measure_front(geometry_, g, params_.front_quantile);
+  const auto last = analysis::measure_front(geometry_, g, params_.measures.front_quantile);
 
   const auto table = io::read_csv(dir_ / "front.csv");
   const std::size_t t = table.column("time"), fs = table.column("front_s"),
@@ -83,7 +85,7 @@ nlohmann::json MpmFlumeObserver::finish(const mpm::Solver<2>& s) {
                {"arc_end_s", geometry_.arc_end_s()},
                {"path_end_s", geometry_.path_end_s()},
                {"bed_low_y", analysis::bed_low_point(geometry_)}};
-  j["front"] = {{"quantile", params_.front_quantile},
+  j["front"] = {{"quantile", params_.measures.front_quantile},
                 {"reach_arc_time", reach_arc},
                 {"reach_barrier_time", reach_barrier},
                 {"final_s", last.front_s}};

@@ -83,17 +83,19 @@ double flume_barrier_length(double beta_deg, double arc_radius) {
   return interpolate(beta_deg, [](const TableRow& r) { return r.barrier_length; });
 }
 
-FlumeGeometry make_flume(double beta_deg, double arc_radius, std::optional<double> l_star,
-                         std::optional<double> barrier_length) {
+FlumeGeometry make_flume(const FlumeShape& shape) {
+  // Kuen's table and the messages are in degrees; the geometry keeps shape.beta.
+  const double beta_deg = rad2deg(shape.beta);
+  const double arc_radius = shape.arc_radius;
   if (!(beta_deg > 0 && beta_deg < 90))
     throw InputError(fmt::format("flume.beta = {} deg: must be between 0 and 90", beta_deg));
   if (!(arc_radius > 0))
     throw InputError(fmt::format("flume.arc_radius = {} m: must be positive", arc_radius));
   FlumeGeometry f;
-  f.beta = deg2rad(beta_deg);
+  f.beta = shape.beta;
   f.radius = arc_radius;
-  f.l_star = l_star.value_or(flume_l_star(beta_deg, arc_radius));
-  f.barrier_length = barrier_length.value_or(flume_barrier_length(beta_deg, arc_radius));
+  f.l_star = shape.l_star.value_or(flume_l_star(beta_deg, arc_radius));
+  f.barrier_length = shape.barrier_length.value_or(flume_barrier_length(beta_deg, arc_radius));
   // Tangent length: from the corner to where the arc meets each straight line.
   const double tangent = arc_radius * std::tan((kChute + f.beta) / 2);
   if (!(f.l_star - tangent > gate_s()))

@@ -80,19 +80,12 @@ double flume_barrier_length(double beta_deg, double arc_radius);
 // Throws InputError (keys flume.beta, flume.arc_radius, flume.l_star,
 // flume.barrier_length) when the pieces do not fit: beta outside (0, 90) deg,
 // R <= 0, an arc that reaches past the gate or the barrier end.
-FlumeGeometry make_flume(double beta_deg, double arc_radius,
-                         std::optional<double> l_star = std::nullopt,
-                         std::optional<double> barrier_length = std::nullopt);
+FlumeGeometry make_flume(const FlumeShape& shape);
 
-// The flume of a scenario's [flume] table.
 // Inner unit normal of the bed at path coordinate s (into the flow).
 inline Vec2 bed_normal(const FlumeGeometry& g, double s) {
   const Vec2 t = g.tangent_at(s);
   return {-t.y(), t.x()};
-}
-
-inline FlumeGeometry make_flume(const FlumeParams& f) {
-  return make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
 }
 
 }  // namespace talus::geometry

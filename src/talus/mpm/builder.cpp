@@ -46,7 +46,7 @@ template <int D>
 void add_flume(Solver<D>& solver, const MpmScenario& sc) {
   if constexpr (D == 2) {
     const MpmFlumeParams& f = *sc.flume;
-    const auto g = flume_geometry(f);
+    const auto g = geometry::make_flume(f.shape);
     const double h = sc.grid.cell_size;
     const int per_cell = f.release_material_index >= 0 ? f.release_per_cell : 2;
     solver.rigid_bodies.push_back(
@@ -72,10 +72,6 @@ void add_flume(Solver<D>& solver, const MpmScenario& sc) {
 }
 
 }  // namespace
-
-geometry::FlumeGeometry flume_geometry(const MpmFlumeParams& f) {
-  return geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
-}
 
 template <int D>
 RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size) {

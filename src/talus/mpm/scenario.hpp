@@ -56,17 +56,13 @@ struct RigidBodyParams {
 // behind the gate filled with points (mpm/flume.hpp). The analysis keys are
 // those of the DEM's [flume] (front quantile, deposit profile bins, tail).
 struct MpmFlumeParams {
-  double beta = 0.0;         // barrier angle, rad
-  double arc_radius = 0.10;  // m
-  std::optional<double> l_star, barrier_length;
+  geometry::FlumeShape shape;
   double wall_friction = 0.0;    // basal friction angle, rad
   int wall_layers = 3;           // rows of boundary particles below the bed
   std::string release_material;  // empty: no release (points from [[bodies]] only)
   int release_material_index = -1;
   int release_per_cell = 2;
-  double front_quantile = 0.998;
-  double profile_bin = 0.01;    // m
-  double tail_thickness = 0.0;  // m; 0: three point spacings of the release
+  geometry::FlumeMeasures measures;  // tail_thickness 0: three point spacings of the release
 };
 
 struct MpmOutputParams {
@@ -108,9 +104,6 @@ Eigen::Matrix<double, D, D> rigid_rotation(const RigidBodyParams& p) {
   else
     return Eigen::AngleAxisd(p.angle, p.axis).toRotationMatrix();
 }
-
-// The flume's geometry (InputError keys flume.* when its pieces do not fit).
-geometry::FlumeGeometry flume_geometry(const MpmFlumeParams& f);
 
 // K0 used for a body's geostatic stress.
 double resolved_k0(const BodyParams& body, const MaterialParams& material);

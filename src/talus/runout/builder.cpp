@@ -9,7 +9,7 @@ namespace talus::runout {
 
 RunoutPath build_path(const PathSpec& spec) {
   if (spec.kind == PathKind::Flume) {
-    return path_from_flume(flume_of(spec), spec.width, spec.spacing);
+    return path_from_flume(geometry::make_flume(spec.flume), spec.width, spec.spacing);
   }
   return path_from_profile(spec.profile_points, spec.profile_widths, spec.smoothing_length,
                            spec.spacing);
@@ -20,7 +20,7 @@ DanSetup build_dan(const RunoutScenario& sc) {
   double barrier_s = std::nan("");
   std::vector<Vec2> polygon = sc.release.polygon;
   if (sc.path.kind == PathKind::Flume) {
-    const auto flume = flume_of(sc.path);
+    const auto flume = geometry::make_flume(sc.path.flume);
     barrier_s = flume.arc_end_s();
     if (sc.release.kind == ReleaseKind::Flume)
       polygon = {flume.release[0], flume.release[1], flume.release[2]};

@@ -17,9 +17,7 @@ enum class ReleaseKind { Flume, Polygon };
 
 struct PathSpec {
   PathKind kind = PathKind::Flume;
-  // Flume: geometry::make_flume(beta, arc_radius, l_star, barrier_length).
-  double beta_deg = 33.0, arc_radius = 0.10;
-  std::optional<double> l_star, barrier_length;
+  geometry::FlumeShape flume;  // Flume
   // Profile: points (x, y) and widths, read from the CSV by io.
   std::string profile_file;
   std::vector<Vec2> profile_points;
@@ -29,11 +27,6 @@ struct PathSpec {
   double width = 1.0;                   // channel width (flume), m
   double spacing = 1e-3;                // path table resolution, m
 };
-
-// The flume of a path of type flume, with all four of its parameters.
-inline geometry::FlumeGeometry flume_of(const PathSpec& p) {
-  return geometry::make_flume(p.beta_deg, p.arc_radius, p.l_star, p.barrier_length);
-}
 
 struct ReleaseSpec {
   ReleaseKind kind = ReleaseKind::Flume;  // the triangle behind the flume's gate

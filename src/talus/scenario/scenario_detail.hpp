@@ -13,6 +13,7 @@
 
 #include "talus/core/declared_keys.hpp"
 #include "talus/dem/params.hpp"
+#include "talus/geometry/flume.hpp"
 #include "talus/io/toml_reader.hpp"
 
 namespace talus::geometry {
@@ -150,18 +151,20 @@ void set_polygon_bounds(dem::ParticleSourceParams& s);
 void read_radius_range(TomlReader& r, dem::ParticleSourceParams& s);
 std::optional<int> read_count(TomlReader& r);
 dem::SettleParams read_settle(TomlReader& r);
-// The [flume] keys that the DEM and the MPM flume share (scenario_flume_keys.cpp),
-// for Flume = dem::FlumeParams or mpm::MpmFlumeParams, read in this order:
-// the path (2D only; beta, arc_radius, l_star, barrier_length), the reader's
-// own keys, the analysis (front_quantile, profile_bin, tail_thickness), then
-// resolve_flume_path: the flume's geometry, failing at "beta" when its pieces
-// do not fit, with f.l_star and f.barrier_length set to the values it uses.
-template <class Flume>
-void read_flume_path(TomlReader& r, Flume& f, const DemContext& ctx);
-template <class Flume>
-void read_flume_analysis(TomlReader& r, Flume& f);
-template <class Flume>
-geometry::FlumeGeometry resolve_flume_path(TomlReader& r, Flume& f);
+// The flume's keys, read and written the same way by DEM and MPM ([flume])
+// and by DAN and fv2d ([path] type = "flume") (scenario_flume_keys.cpp).
+// The DEM and MPM flume is 2D only.
+void require_2d_flume(TomlReader& r, const DemContext& ctx);
+// beta (degrees in the file), arc_radius, l_star, barrier_length.
+geometry::FlumeShape read_flume_shape(TomlReader& r);
+// front_quantile, profile_bin, tail_thickness.
+geometry::FlumeMeasures read_flume_measures(TomlReader& r);
+// The shape's geometry, failing at "beta" when its pieces do not fit; sets
+// the shape's l_star and barrier_length to the values it uses.
+geometry::FlumeGeometry resolve_flume_shape(TomlReader& r, geometry::FlumeShape& f);
+// Their keys in a resolved scenario's table (beta in degrees).
+void write_flume_shape(nlohmann::ordered_json& t, const geometry::FlumeShape& f);
+void write_flume_measures(nlohmann::ordered_json& t, const geometry::FlumeMeasures& m);
 // [flume]: fills s.flume, appends the generated walls (and the release fill
 // when [flume.release] is given) to s.walls and s.sources.
 void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx);

@@ -49,7 +49,8 @@ dem::ParticleSourceParams read_release(TomlReader& r, const std::vector<Vec3>& p
 
 void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
   dem::FlumeParams f;
-  read_flume_path(r, f, ctx);
+  require_2d_flume(r, ctx);
+  f.shape = read_flume_shape(r);
   f.wall_material = r.required_string("wall_material");
   check_material(r, "wall_material", f.wall_material, ctx);
   f.lift_gate = r.enumeration("gate", kGateModes, 0) == 1;
@@ -58,8 +59,8 @@ void read_flume(TomlReader& r, dem::DemScenario& s, const DemContext& ctx) {
   const auto layers = r.integer("layers", f.layers);
   r.expect(layers >= 1 && layers <= 100, "layers", "an integer from 1 to 100");
   f.layers = static_cast<int>(layers);
-  read_flume_analysis(r, f);
-  const geometry::FlumeGeometry g = resolve_flume_path(r, f);
+  f.measures = read_flume_measures(r);
+  const geometry::FlumeGeometry g = resolve_flume_shape(r, f.shape);
 
   auto walls = g.walls(f.wall_material);
   // The lid only holds the fill in place while it settles.

@@ -1,35 +1,41 @@
-// The [flume] keys that the DEM flume (scenario_flume.cpp) and the MPM flume
-// (scenario_mpm.cpp) share: the path and the analysis. One reading, so the
-// two accept the same values and fail with the same messages.
+// The flume's keys, one reading and one writing for the four methods: the DEM
+// flume (scenario_flume.cpp), the MPM flume (scenario_mpm.cpp) and the runout
+// path of type flume (scenario_runout.cpp) accept the same values and fail
+// with the same messages.
+#include <cmath>
+
 #include "talus/core/error.hpp"
 #include "talus/geometry/flume.hpp"
 #include "talus/scenario/scenario_detail.hpp"
-#include "talus/mpm/scenario.hpp"
 
 namespace talus::io::detail {
 
-template <class Flume>
-void read_flume_path(TomlReader& r, Flume& f, const DemContext& ctx) {
+void require_2d_flume(TomlReader& r, const DemContext& ctx) {
   if (ctx.dimension != 2) r.fail("flume", "the flume is a 2D scenario: set run.dimension = 2");
+}
+
+geometry::FlumeShape read_flume_shape(TomlReader& r) {
+  geometry::FlumeShape f;
   f.beta = r.required_angle("beta");
   f.arc_radius = required_number_in(r, "arc_radius", positive());
   f.l_star = optional_number_in(r, "l_star", positive());
   f.barrier_length = optional_number_in(r, "barrier_length", positive());
+  return f;
 }
 
-template <class Flume>
-void read_flume_analysis(TomlReader& r, Flume& f) {
-  f.front_quantile =
-      number_in(r, "front_quantile", f.front_quantile, between(0.5, 1.0, true, false));
-  f.profile_bin = number_in(r, "profile_bin", f.profile_bin, positive());
-  f.tail_thickness = number_in(r, "tail_thickness", f.tail_thickness, non_negative());
+geometry::FlumeMeasures read_flume_measures(TomlReader& r) {
+  geometry::FlumeMeasures m;
+  m.front_quantile =
+      number_in(r, "front_quantile", m.front_quantile, between(0.5, 1.0, true, false));
+  m.profile_bin = number_in(r, "profile_bin", m.profile_bin, positive());
+  m.tail_thickness = number_in(r, "tail_thickness", m.tail_thickness, non_negative());
+  return m;
 }
 
-template <class Flume>
-geometry::FlumeGeometry resolve_flume_path(TomlReader& r, Flume& f) {
+geometry::FlumeGeometry resolve_flume_shape(TomlReader& r, geometry::FlumeShape& f) {
   geometry::FlumeGeometry g;
   try {
-    g = geometry::make_flume(rad2deg(f.beta), f.arc_radius, f.l_star, f.barrier_length);
+    g = geometry::make_flume(f);
   } catch (const InputError& e) {
     r.fail("beta", e.what());
   }
@@ -38,11 +44,18 @@ geometry::FlumeGeometry resolve_flume_path(TomlReader& r, Flume& f) {
   return g;
 }
 
-template void read_flume_path(TomlReader&, dem::FlumeParams&, const DemContext&);
-template void read_flume_path(TomlReader&, mpm::MpmFlumeParams&, const DemContext&);
-template void read_flume_analysis(TomlReader&, dem::FlumeParams&);
-template void read_flume_analysis(TomlReader&, mpm::MpmFlumeParams&);
-template geometry::FlumeGeometry resolve_flume_path(TomlReader&, dem::FlumeParams&);
-template geometry::FlumeGeometry resolve_flume_path(TomlReader&, mpm::MpmFlumeParams&);
+void write_flume_shape(nlohmann::ordered_json& t, const geometry::FlumeShape& f) {
+  // Rounded to 1e-9 deg so that the file's 33 is written back as 33.
+  t["beta"] = std::round(rad2deg(f.beta) * 1e9) / 1e9;
+  t["arc_radius"] = f.arc_radius;
+  if (f.l_star) t["l_star"] = *f.l_star;
+  if (f.barrier_length) t["barrier_length"] = *f.barrier_length;
+}
+
+void write_flume_measures(nlohmann::ordered_json& t, const geometry::FlumeMeasures& m) {
+  t["front_quantile"] = m.front_quantile;
+  t["profile_bin"] = m.profile_bin;
+  t["tail_thickness"] = m.tail_thickness;
+}
 
 }  // namespace talus::io::detail

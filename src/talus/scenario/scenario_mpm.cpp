@@ -241,15 +241,16 @@ void read_membranes(TomlReader& root, mpm::MpmScenario& s, const DemContext& ctx
 // filled with points of release.material (mpm/flume.hpp).
 mpm::MpmFlumeParams read_flume(TomlReader& r, const mpm::MpmScenario& s, const DemContext& ctx) {
   mpm::MpmFlumeParams f;
-  detail::read_flume_path(r, f, ctx);
+  detail::require_2d_flume(r, ctx);
+  f.shape = detail::read_flume_shape(r);
   f.wall_friction = r.required_angle("wall_friction");
   r.expect(f.wall_friction >= 0.0 && f.wall_friction < M_PI / 2, "wall_friction",
            "an angle in [0, 90) degrees");
   const auto layers = r.integer("wall_layers", f.wall_layers);
   r.expect(layers >= 1 && layers <= 8, "wall_layers", "an integer in [1, 8]");
   f.wall_layers = static_cast<int>(layers);
-  detail::read_flume_analysis(r, f);
-  detail::resolve_flume_path(r, f);
+  f.measures = detail::read_flume_measures(r);
+  detail::resolve_flume_shape(r, f.shape);
   if (auto release = r.optional_table("release")) {
     f.release_material = release->required_string("material");
     for (std::size_t i = 0; i < s.materials.size(); ++i)
@@ -311,15 +312,11 @@ mpm::MpmScenario parse_mpm_scenario(const ScenarioFile& file) {
 
 namespace {
 nlohmann::ordered_json flume_to_json(const mpm::MpmFlumeParams& f) {
-  nlohmann::ordered_json j = {{"beta", rad2deg(f.beta)},
-                              {"arc_radius", f.arc_radius},
-                              {"l_star", f.l_star.value_or(0.0)},
-                              {"barrier_length", f.barrier_length.value_or(0.0)},
-                              {"wall_friction", rad2deg(f.wall_friction)},
-                              {"wall_layers", f.wall_layers},
-                              {"front_quantile", f.front_quantile},
-                              {"profile_bin", f.profile_bin},
-                              {"tail_thickness", f.tail_thickness}};
+  nlohmann::ordered_json j;
+  detail::write_flume_shape(j, f.shape);
+  j["wall_friction"] = rad2deg(f.wall_friction);
+  j["wall_layers"] = f.wall_layers;
+  detail::write_flume_measures(j, f.measures);
   if (f.release_material_index >= 0)
     j["release"] = {{"material", f.release_material}, {"points_per_cell", f.release_per_cell}};
   return j;

@@ -77,16 +77,9 @@ void read_path(TomlReader& r, const detail::DemContext& ctx, runout::PathSpec& p
   if (p.kind == PathKind::Flume) {
     r.reject({"file", "smoothing_length", "barrier_start"},
              "is not used by a path of type 'flume'");
-    p.beta_deg = required_number_in(r, "beta", between(0.0, 90.0, true, true));
-    p.arc_radius = required_number_in(r, "arc_radius", positive());
-    p.l_star = detail::optional_number_in(r, "l_star", positive());
-    p.barrier_length = detail::optional_number_in(r, "barrier_length", positive());
+    p.flume = detail::read_flume_shape(r);
     p.width = number_in(r, "width", p.width, positive());
-    try {
-      runout::flume_of(p);
-    } catch (const InputError& e) {
-      r.fail("type", e.what());
-    }
+    detail::resolve_flume_shape(r, p.flume);
   } else {
     r.reject({"beta", "arc_radius", "l_star", "barrier_length", "width"},
              "is not used by a path of type 'profile' (the width is the CSV's third column)");
@@ -383,10 +376,7 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
   if (grid) run["max_time_step"] = s.grid.max_time_step;
   Json path = {{"type", detail::name_of(kPathKinds, s.path.kind)}, {"spacing", s.path.spacing}};
   if (s.path.kind == PathKind::Flume) {
-    path["beta"] = s.path.beta_deg;
-    path["arc_radius"] = s.path.arc_radius;
-    if (s.path.l_star) path["l_star"] = *s.path.l_star;
-    if (s.path.barrier_length) path["barrier_length"] = *s.path.barrier_length;
+    detail::write_flume_shape(path, s.path.flume);
     path["width"] = s.path.width;
   } else {
     path["file"] = s.path.profile_file;

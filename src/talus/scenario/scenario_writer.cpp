@@ -221,18 +221,14 @@ class Writer {
 
   // [flume] with its generated fill as [flume.release].
   static Json flume(const dem::FlumeParams& f, const dem::DemScenario& s) {
-    Json t{{"beta", degrees(f.beta)},
-           {"arc_radius", f.arc_radius},
-           {"l_star", *f.l_star},
-           {"barrier_length", *f.barrier_length},
-           {"wall_material", f.wall_material},
-           {"gate", f.lift_gate ? "lift" : "remove"},
-           {"gate_speed", f.gate_speed},
-           {"gate_open", f.gate_open},
-           {"layers", f.layers},
-           {"front_quantile", f.front_quantile},
-           {"profile_bin", f.profile_bin},
-           {"tail_thickness", f.tail_thickness}};
+    Json t;
+    detail::write_flume_shape(t, f.shape);
+    t["wall_material"] = f.wall_material;
+    t["gate"] = f.lift_gate ? "lift" : "remove";
+    t["gate_speed"] = f.gate_speed;
+    t["gate_open"] = f.gate_open;
+    t["layers"] = f.layers;
+    detail::write_flume_measures(t, f.measures);
     add_release(t, s);
     return t;
   }

@@ -49,7 +49,7 @@ class DemFlume final : public Bound<analysis::FlumeObserver, dem::DemRun<2>> {
 std::unique_ptr<Experiment> attach_dem(DemSimulation<2>& dem, const RunContext& ctx) {
   const auto& f = *dem.scenario()->flume;
   const auto& s = dem.dem_run().system;
-  auto obs = std::make_unique<analysis::FlumeObserver>(ctx.out, geometry::make_flume(f), f, s,
+  auto obs = std::make_unique<analysis::FlumeObserver>(ctx.out, geometry::make_flume(f.shape), f, s,
                                                        ctx.resume, s.time);
   // Snapshots carry each grain's initial layer.
   const auto* layers = obs.get();
