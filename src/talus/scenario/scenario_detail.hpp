@@ -13,7 +13,7 @@
 
 #include "talus/core/declared_keys.hpp"
 #include "talus/dem/params.hpp"
-#include "talus/geometry/flume.hpp"
+#include "talus/geometry/flume_params.hpp"
 #include "talus/io/toml_reader.hpp"
 
 namespace talus::geometry {
@@ -162,6 +162,9 @@ geometry::FlumeMeasures read_flume_measures(TomlReader& r);
 // The shape's geometry, failing at "beta" when its pieces do not fit; sets
 // the shape's l_star and barrier_length to the values it uses.
 geometry::FlumeGeometry resolve_flume_shape(TomlReader& r, geometry::FlumeShape& f);
+// An angle held in radians as a resolved scenario writes it: degrees rounded
+// to 1e-9, so that the file's 33 is written back as 33.
+double degrees_for_file(double radians);
 // Their keys in a resolved scenario's table (beta in degrees).
 void write_flume_shape(nlohmann::ordered_json& t, const geometry::FlumeShape& f);
 void write_flume_measures(nlohmann::ordered_json& t, const geometry::FlumeMeasures& m);

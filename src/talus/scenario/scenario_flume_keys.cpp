@@ -44,9 +44,10 @@ geometry::FlumeGeometry resolve_flume_shape(TomlReader& r, geometry::FlumeShape&
   return g;
 }
 
+double degrees_for_file(double radians) { return std::round(rad2deg(radians) * 1e9) / 1e9; }
+
 void write_flume_shape(nlohmann::ordered_json& t, const geometry::FlumeShape& f) {
-  // Rounded to 1e-9 deg so that the file's 33 is written back as 33.
-  t["beta"] = std::round(rad2deg(f.beta) * 1e9) / 1e9;
+  t["beta"] = degrees_for_file(f.beta);
   t["arc_radius"] = f.arc_radius;
   if (f.l_star) t["l_star"] = *f.l_star;
   if (f.barrier_length) t["barrier_length"] = *f.barrier_length;

@@ -101,7 +101,7 @@ class Writer {
              m.remove_at == dem::kNever && m.servo_pressure == 0.0);
   }
   // Degrees rounded to 1e-9 so that 241 is not written as 241.00000000000003.
-  static double degrees(double radians) { return std::round(rad2deg(radians) * 1e9) / 1e9; }
+  static double degrees(double radians) { return detail::degrees_for_file(radians); }
 
   Json motion(const dem::WallMotionParams& m) const {
     Json t{{"velocity", vec(m.velocity)}, {"start", m.move_start}};
