@@ -76,8 +76,8 @@ struct Forces {
         c(n, 0),
         c_shared(n, 0) {}
   ForceTarget<2> target(int own_lo, int own_hi) {
-    return {f.data(),        t.data(),        c.data(), f_shared.data(),
-            t_shared.data(), c_shared.data(), own_lo,   own_hi};
+    return {f.data(), t.data(), c.data(), f_shared.data(), t_shared.data(), c_shared.data(),
+            own_lo,   own_hi,   0};
   }
 };
 

@@ -2,6 +2,11 @@
 // (../shared/peers/README.md §1 and §4).
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cstdlib>
+#include <thread>
+#include <vector>
+
 #include "peer_case.hpp"
 #include "support/dem_loop.hpp"
 #include "talus/dem/builder.hpp"
@@ -70,4 +75,46 @@ TEST(PeerColumn, TwoThreadsAreDeterministicAndAgreeWithOne) {
   // relative is far below the 1e-4 at which the peers themselves agree.
   const double ke1 = kinetic_energy(one->system.particles), ke2 = kinetic_energy(a);
   EXPECT_NEAR(ke2, ke1, 1e-9 * ke1);
+}
+
+// Two threads give the same bits whether the pair of them or one alone
+// computes the chunks (dem/chunk_partition.hpp): the run may switch between
+// the two as the machine gets busy (core/adaptive_team.hpp) without a trace.
+TEST(PeerColumn, TwoThreadsGiveTheSameBitsAloneAsATeamAndUnderLoad) {
+  auto run_with = [](const char* team) {
+    if (team)
+      setenv("TALUS_TEAM", team, 1);
+    else
+      unsetenv("TALUS_TEAM");
+    auto r = build_dem<3>(cases::peer_column(10, 10, 20), {2, true});
+    run::DemControl c;
+    c.duration = 600 * 5e-6;
+    test::run_dem<3>(*r, c);
+    unsetenv("TALUS_TEAM");
+    return r;
+  };
+  auto team = run_with("team");
+  auto alone = run_with("alone");
+  // Adaptive, with two busy threads competing for the cores meanwhile.
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> busy;
+  for (int k = 0; k < 2; ++k)
+    busy.emplace_back([&] {
+      volatile double x = 1.0;
+      while (!stop.load(std::memory_order_relaxed)) x = x * 1.0000001;
+    });
+  auto loaded = run_with(nullptr);
+  stop = true;
+  for (auto& t : busy) t.join();
+  for (const auto* other : {&alone, &loaded}) {
+    const auto& a = team->system.particles;
+    const auto& b = (*other)->system.particles;
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a.id[i], b.id[i]);
+      ASSERT_EQ(a.x[i], b.x[i]);
+      ASSERT_EQ(a.v[i], b.v[i]);
+      ASSERT_EQ(a.w[i], b.w[i]);
+    }
+  }
 }

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -10,6 +11,8 @@
 #include <string>
 #include <type_traits>
 
+#include "talus/core/adaptive_team.hpp"
+#include "talus/dem/chunk_partition.hpp"
 #include "talus/dem/contact/laws.hpp"
 #include "talus/dem/contact/rolling.hpp"
 #include "talus/dem/force_target.hpp"
@@ -19,7 +22,6 @@
 #include "talus/dem/linear_pairs.hpp"
 #include "talus/dem/membrane/membrane_step.hpp"
 #include "talus/dem/pair_kinematics.hpp"
-#include "talus/dem/thread_partition.hpp"
 #include "talus/dem/wall_contact.hpp"
 #include "talus/dem/wall_motion.hpp"
 #include "talus/geometry/mesh_contacts.hpp"
@@ -57,7 +59,8 @@ class Stepper final : public StepperBase<D> {
     {
 #pragma omp single
       {
-        prepare_step(omp_get_num_threads());
+        team_ = omp_get_num_threads();
+        prepare_step(team_);
         if constexpr (D == 3)
           if (membranes_) membranes_->compute_forces(s_);
       }
@@ -79,15 +82,33 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
-  // All threads run the whole step loop in one parallel region; each works
-  // on its share of the particles and pairs (dem/thread_partition.hpp), the
+  // All threads run the whole step loop in one parallel region; each takes
+  // chunks of the particles and pairs in turn (dem/chunk_partition.hpp), the
   // serial parts run on one thread. A step ends without a barrier: its bookkeeping (wall forces,
   // impulses, contact counts, the step counter) is done by the next step's serial part, or here
   // after the last step.
+  // With several threads the steps run in segments, each with the whole team
+  // or one thread alone, whichever is faster now (core/adaptive_team.hpp): the
+  // chunks make the results the same either way.
   void advance(int64_t steps) override {
     error_ = nullptr;
-#pragma omp parallel num_threads(s_.threads)
-    for (int64_t k = 0; k < steps && !error_; ++k) one_step();
+    using Clock = std::chrono::steady_clock;
+    for (int64_t done = 0; done < steps && !error_;) {
+      const int team = adaptive_.team();
+      const int64_t segment =
+          s_.threads > 1 ? std::min(steps - done, adaptive_.segment_steps()) : steps - done;
+      // libgomp's idle threads spin for milliseconds after a parallel region,
+      // on the core the one working thread or the competing process needs:
+      // going alone, release them (they are made anew for the next team).
+      if (team == 1 && last_team_ > 1) omp_pause_resource_all(omp_pause_soft);
+      last_team_ = team;
+      const auto start = Clock::now();
+      sleeps_.store(0, std::memory_order_relaxed);
+      run_segment(team, segment);
+      adaptive_.record(team, segment, std::chrono::duration<double>(Clock::now() - start).count(),
+                       sleeps_.load(std::memory_order_relaxed));
+      done += segment;
+    }
     if (step_open_) close_step();
     // Exceptions may not cross the parallel region: they are carried out here.
     if (error_) std::rethrow_exception(error_);
@@ -148,62 +169,118 @@ class Stepper final : public StepperBase<D> {
   }
 
  private:
-  // One velocity-Verlet step; called by every thread of the team.
-  void one_step() {
+  void run_segment(int team, int64_t steps) {
+#pragma omp parallel num_threads(team) if (team > 1)
+    {
+#pragma omp single
+      {
+        team_ = omp_get_num_threads();
+        barrier_.reset(team_);
+        moved_.assign(team_, 0.0);
+      }
+      for (int64_t k = 0; k < steps && !error_; ++k) one_step(k == 0);
+    }
+  }
+
+  // One velocity-Verlet step; called by every thread of the team. `first`:
+  // the first step of this parallel region, whose particles are all complete.
+  void one_step(bool first) {
     auto& p = s_.particles;
     const double dt = s_.dt;
     const Kick half = kick_params(0.5 * dt);
-    const int n = static_cast<int>(p.size());
     double moved = 0.0;
-    // First half kick and drift in one pass over the particles.
-    const auto [i0, i1] = partition_.particle_range(n);
-    for (int i = i0; i < i1; ++i) {
-      kick_one<D>(p, i, half);
-      p.x[i] += dt * p.v[i];
-      const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
-      // A NaN position counts as infinitely far: the rebuild then stops the run.
-      moved = std::isnan(d2) ? std::numeric_limits<double>::infinity() : std::max(moved, d2);
+    // First half kick and drift in one pass over the particles, chunk by
+    // chunk once the last step has finished the chunk (on any thread).
+    auto drift = [&](int i0, int i1) {
+      for (int i = i0; i < i1; ++i) {
+        kick_one<D>(p, i, half);
+        p.x[i] += dt * p.v[i];
+        const double d2 = (p.x[i] - s_.neighbours.reference_positions()[i]).squaredNorm();
+        // A NaN position counts as infinitely far: the rebuild then stops the run.
+        moved = std::isnan(d2) ? std::numeric_limits<double>::infinity() : std::max(moved, d2);
+      }
+    };
+    const int n = static_cast<int>(p.size()), tid = omp_get_thread_num();
+    if (!chunked() || first) {
+      // Equal shares: the particles may have changed since the last cut.
+      drift(static_cast<int>(static_cast<int64_t>(n) * tid / team_),
+            static_cast<int>(static_cast<int64_t>(n) * (tid + 1) / team_));
+    } else {
+      for (int c = partition_.drift_claims.take(tid); c >= 0;
+           c = partition_.drift_claims.take(tid)) {
+        if (partition_.wait_for_finished(c, force_pass_)) note_sleep();
+        drift(partition_.chunk(c).p0, partition_.chunk(c).p1);
+      }
     }
-#pragma omp critical(talus_moved)
-    max_moved_ = moved <= max_moved_ ? max_moved_ : moved;
-#pragma omp barrier
+    moved_[tid] = moved;
+    // The last thread to arrive closes the step and decides on a rebuild.
+    if (barrier_.arrive_and_wait([&] { serial_part(); })) note_sleep();
+    // A rebuild and the membranes run OpenMP tasks: the whole team joins
+    // them in an OpenMP `single` (all threads read the same flag here).
+    if (team_tasks_) {
 #pragma omp single
-    {
-      if (step_open_) close_step();
-      moved = max_moved_;
-      max_moved_ = 0.0;
-      s_.time = static_cast<double>(s_.step + 1) * dt;
-      // Stress-controlled walls (geometry/wall.hpp) move on the forces just closed.
-      if (!s_.settling)
-        for (auto& w : s_.walls) w.advance_servo(s_.time - dt, dt);
-      const bool walls_changed = update_walls(false);
-      const double wall_moved = wall_motion_since_build();
-      const double half_skin = 0.5 * s_.skin;
-      try {
-        if (walls_changed || !(moved <= half_skin * half_skin) || wall_moved > half_skin) rebuild();
-      } catch (...) {
-        error_ = std::current_exception();
-      }
-      if (!error_) {
-        prepare_step(omp_get_num_threads());
-        step_open_ = true;
-        // Membranes (serial, dem/membrane/membrane_step.hpp): their whole step,
-        // and their contact forces on the grains, which finish_particles adds.
-        if constexpr (D == 3)
-          if (membranes_) membranes_->step(s_);
-      }
+      tasked_part();
     }
     if (error_) return;
     compute_forces(&half);
   }
 
+  // The serial part of a step (any one thread, no OpenMP construct): the last
+  // step's bookkeeping, the time, servo walls, and whether to rebuild.
+  void serial_part() {
+    const double dt = s_.dt;
+    if (step_open_) close_step();
+    double moved = 0.0;
+    for (double m : moved_) moved = m <= moved ? moved : m;  // NaN-free: infinity marks NaN
+    s_.time = static_cast<double>(s_.step + 1) * dt;
+    // Stress-controlled walls (geometry/wall.hpp) move on the forces just closed.
+    if (!s_.settling)
+      for (auto& w : s_.walls) w.advance_servo(s_.time - dt, dt);
+    const bool walls_changed = update_walls(false);
+    const double wall_moved = wall_motion_since_build();
+    const double half_skin = 0.5 * s_.skin;
+    rebuild_now_ = walls_changed || !(moved <= half_skin * half_skin) || wall_moved > half_skin;
+    bool membranes = false;
+    if constexpr (D == 3) membranes = membranes_ != nullptr;
+    team_tasks_ = rebuild_now_ || membranes;
+    partition_.drift_claims.reset(team_, partition_.size());
+    if (!team_tasks_) open_step();
+  }
+
+  // The rest of the serial part, where a rebuild or the membranes need it.
+  void tasked_part() {
+    try {
+      if (rebuild_now_) rebuild();
+    } catch (...) {
+      error_ = std::current_exception();
+    }
+    if (error_) return;
+    open_step();
+    // Membranes (serial, dem/membrane/membrane_step.hpp): their whole step,
+    // and their contact forces on the grains, which finish_particles adds.
+    if constexpr (D == 3)
+      if (membranes_) membranes_->step(s_);
+  }
+
+  bool chunked() const { return s_.threads > 1; }
+  // A thread had to sleep waiting for another (core/team_sync.hpp).
+  void note_sleep() { sleeps_.fetch_add(1, std::memory_order_relaxed); }
+
+  void open_step() {
+    prepare_step(team_);
+    step_open_ = true;
+  }
+
   // The step's serial set-up, once the particles have drifted.
   void prepare_step(int team) {
     ++force_pass_;
-    prepare_wall_accumulators();
+    // The chunks follow the thread count asked for, not the team of the
+    // moment: a step gives the same bits with one thread or the whole team.
+    if (chunked()) partition_.prepare(s_.threads * kChunksPerThread, s_.particles, s_.neighbours);
+    partition_.force_claims.reset(team, partition_.size());
+    prepare_wall_accumulators(chunked() ? partition_.size() : 1);
     pair_touching_ = 0;
     wall_touching_ = 0;
-    if (team > 1) partition_.prepare(team, s_.particles, s_.neighbours);
   }
 
   // Wall forces and contact counts of the forces just computed.
@@ -370,7 +447,7 @@ class Stepper final : public StepperBase<D> {
     const int n = static_cast<int>(p.size());
     const std::size_t np = nl.pairs.size();
     int64_t touching = 0;
-    if (omp_get_num_threads() <= 1) {
+    if (!chunked()) {
       for (int i = 0; i < n; ++i) {
         p.f[i] = zero_of<Vec>();
         p.t[i] = Space<D>::rot_zero();
@@ -378,28 +455,45 @@ class Stepper final : public StepperBase<D> {
       }
       const ForceTarget<D> out{p.f.data(), p.t.data(), p.contacts.data(),
                                p.f.data(), p.t.data(), p.contacts.data(),
-                               0,          n - 1};
+                               0,          n - 1,      0};
       touching = scatter_pairs(0, np, out);
-      finish_particles(then_kick, 0, n);
+      finish_particles(then_kick, 0, n, wall_acc_.data());
     } else {
-      // Each thread scatters its share of the pairs: forces on particles no
-      // other thread's pairs touch straight into the particle arrays, the
-      // others into its buffer.
+      // Each thread takes chunks (its own first) and scatters their pairs:
+      // forces on particles no other chunk's pairs touch straight into the
+      // particle arrays, the others into the chunk's buffer. No barrier: it
+      // finishes at once the particles no earlier chunk's pairs reach, the
+      // rest once it has no chunk left to scatter and those chunks are done.
       const int tid = omp_get_thread_num();
-      auto& buf = partition_.share(tid);
-      partition_.clear(tid, p);
-      const ForceTarget<D> out{p.f.data(),   p.t.data(),          p.contacts.data(), buf.f.data(),
-                               buf.t.data(), buf.contacts.data(), buf.own_lo,        buf.own_hi};
-      touching = scatter_pairs(buf.k0, buf.k1, out);
-      partition_.mark_scattered(tid, force_pass_);
-      // No barrier: first the particles no earlier thread's pairs reach, then,
-      // once those threads are done, the rest.
-      const int split = std::clamp(buf.wait_hi + 1, buf.p0, buf.p1);
-      partition_.sum_buffers(p, split, buf.p1);
-      finish_particles(then_kick, split, buf.p1);
-      partition_.wait_for_earlier(tid, force_pass_);
-      partition_.sum_buffers(p, buf.p0, split);
-      finish_particles(then_kick, buf.p0, split);
+      thread_local std::vector<int> taken;
+      taken.clear();
+      auto acc = [&](int c) {
+        return wall_acc_.data() + static_cast<std::size_t>(c) * acc_stride();
+      };
+      auto split = [&](int c) {
+        const auto& buf = partition_.chunk(c);
+        return std::clamp(buf.wait_hi + 1, buf.p0, buf.p1);
+      };
+      for (int c = partition_.force_claims.take(tid); c >= 0;
+           c = partition_.force_claims.take(tid)) {
+        auto& buf = partition_.chunk(c);
+        partition_.clear(c, p);
+        const ForceTarget<D> out{p.f.data(),   p.t.data(),   p.contacts.data(),
+                                 buf.f.data(), buf.t.data(), buf.contacts.data(),
+                                 buf.own_lo,   buf.own_hi,   buf.lo};
+        touching += scatter_pairs(buf.k0, buf.k1, out);
+        partition_.mark_scattered(c, force_pass_);
+        partition_.sum_buffers(p, c, split(c), buf.p1);
+        finish_particles(then_kick, split(c), buf.p1, acc(c));
+        taken.push_back(c);
+      }
+      for (const int c : taken) {
+        const auto& buf = partition_.chunk(c);
+        if (partition_.wait_for_earlier(c, force_pass_)) note_sleep();
+        partition_.sum_buffers(p, c, buf.p0, split(c));
+        finish_particles(then_kick, buf.p0, split(c), acc(c));
+        partition_.mark_finished(c, force_pass_);
+      }
     }
 #pragma omp atomic
     pair_touching_ += touching;
@@ -430,12 +524,12 @@ class Stepper final : public StepperBase<D> {
     return touching;
   }
 
-  // Per-thread sums of wall force and torque, zeroed every step and reduced in
-  // thread order.
-  void prepare_wall_accumulators() {
+  // Per-chunk sums of wall force and torque, zeroed every step and reduced in
+  // chunk order.
+  void prepare_wall_accumulators(int chunks) {
     const int nw = static_cast<int>(s_.walls.size());
-    const int nt = std::max(1, s_.threads);
-    wall_acc_.assign(static_cast<std::size_t>(nt) * acc_stride(), Vec3::Zero());
+    wall_chunks_ = chunks;
+    wall_acc_.assign(static_cast<std::size_t>(chunks) * acc_stride(), Vec3::Zero());
     pivots_.resize(nw);
     moving_.resize(nw);
     for (int w = 0; w < nw; ++w) {
@@ -444,18 +538,17 @@ class Stepper final : public StepperBase<D> {
     }
   }
 
-  // Each thread's block of wall sums is followed by 192 spare bytes, so that
+  // Each chunk's block of wall sums is followed by 192 spare bytes, so that
   // two threads never write the same cache line (measured: shared lines made
   // the wall pass 50 % slower on two threads).
   std::size_t acc_stride() const { return 2 * s_.walls.size() + 8; }
 
   void sum_wall_accumulators() {
     const int nw = static_cast<int>(s_.walls.size());
-    const int nt = std::max(1, s_.threads);
     for (int w = 0; w < nw; ++w) {
       s_.walls[w].force.setZero();
       s_.walls[w].torque.setZero();
-      for (int t = 0; t < nt; ++t) {
+      for (int t = 0; t < wall_chunks_; ++t) {
         s_.walls[w].force += wall_acc_[static_cast<std::size_t>(t) * acc_stride() + 2 * w];
         s_.walls[w].torque += wall_acc_[static_cast<std::size_t>(t) * acc_stride() + 2 * w + 1];
       }
@@ -515,12 +608,12 @@ class Stepper final : public StepperBase<D> {
     return 1;
   }
 
-  // Particles [i0, i1) once their pair forces are complete: wall contacts,
-  // then the optional half kick and Kuen's rolling resistance.
-  void finish_particles(const Kick* then_kick, int i0, int i1) {
+  // Particles [i0, i1) once their pair forces are complete: wall contacts
+  // (their sums on the walls into `acc`), then the optional half kick and
+  // Kuen's rolling resistance.
+  void finish_particles(const Kick* then_kick, int i0, int i1, Vec3* acc) {
     auto& p = s_.particles;
     auto& nl = s_.neighbours;
-    Vec3* acc = wall_acc_.data() + static_cast<std::size_t>(omp_get_thread_num()) * acc_stride();
     const bool kuen_on = kuen_.enabled();
     const KuenStep kuen = kuen_.at(s_.dt);
     int64_t touching = 0;
@@ -573,14 +666,21 @@ class Stepper final : public StepperBase<D> {
   int n_materials_ = 0;
   std::vector<typename Model::Coeffs> coeffs_;
   std::vector<double> friction_;  // per material pair, for pair_contact_forces
-  ThreadPartition<D> partition_;
-  int64_t force_pass_ = 0;  // counts the force computations
+  ChunkPartition<D> partition_;
+  int team_ = 1;                                   // threads in the current parallel region
+  TeamBarrier barrier_;                            // the step's one barrier (core/team_sync.hpp)
+  AdaptiveTeam adaptive_{s_.threads};              // the team or one thread, segment by segment
+  std::atomic<int64_t> sleeps_{0};                 // waits that slept in this segment
+  int last_team_ = 0;                              // the team of the last segment
+  std::vector<double> moved_;                      // each thread's largest squared drift this step
+  bool rebuild_now_ = false, team_tasks_ = false;  // decided by serial_part
+  int64_t force_pass_ = 0;                         // counts the force computations
+  int wall_chunks_ = 1;                            // blocks of wall sums in wall_acc_
   std::vector<Vec3> wall_acc_, pivots_;
   std::vector<char> moving_, active_;
   int64_t pair_touching_ = 0, wall_touching_ = 0;
   bool walls_set_up_ = false;  // primitives and active_ hold every wall
   bool step_open_ = false;     // a step's forces are done, its bookkeeping is not
-  double max_moved_ = 0.0;     // squared, largest displacement since the last build
   std::exception_ptr error_;   // raised inside the parallel region, rethrown outside
   KuenRolling kuen_;
   std::unique_ptr<membrane::MembraneStep> membranes_;  // 3D runs with membranes only
