@@ -228,6 +228,17 @@ class Stepper final : public StepperBase<D> {
   // The serial part of a step (any one thread, no OpenMP construct): the last
   // step's bookkeeping, the time, servo walls, and whether to rebuild.
   void serial_part() {
+    // An exception may not leave the barrier (the others would wait for ever):
+    // it is carried out of the parallel region like the rebuild's.
+    try {
+      serial_bookkeeping();
+    } catch (...) {
+      error_ = std::current_exception();
+      team_tasks_ = false;
+    }
+  }
+
+  void serial_bookkeeping() {
     const double dt = s_.dt;
     if (step_open_) close_step();
     double moved = 0.0;
