@@ -17,7 +17,7 @@ int segment(AdaptiveTeam& a, double team_rate, double alone_rate, double sleepy)
   const int64_t steps = a.segment_steps();
   const double rate = team > 1 ? team_rate : alone_rate;
   a.record(team, steps, static_cast<double>(steps) / rate,
-           team > 1 ? static_cast<int64_t>(sleepy * static_cast<double>(steps)) : 0);
+           team > 1 && AdaptiveTeam::sleepy(static_cast<int64_t>(sleepy * steps), steps));
   return team;
 }
 

@@ -104,8 +104,9 @@ auto with_threads(int n, F&& f) {
 // 40 steps of 1e-4 s: each step has the same parallel loops as a long run; on
 // a loaded 2-core machine every OpenMP barrier can cost a descheduling, so
 // the step count, not the physics, set the former 23 s.
-std::vector<Eigen::Vector2d> positions_after(int steps) {
+std::vector<Eigen::Vector2d> positions_after(int steps, int chunks = 0) {
   Solver<2> s = build_mpm<2>(column(ShapeKind::CubicBSpline));
+  s.set_chunks(chunks);
   for (std::size_t i = 0; i < s.particles.size(); ++i)
     s.particles.v[i] = Eigen::Vector2d(1.0, s.particles.x[i].y() > 0.05 ? 1.0 : -1.0);
   for (int i = 0; i < steps; ++i) s.step(1e-4);
@@ -130,6 +131,23 @@ TEST(MpmThreads, DeterministicForAThreadCountAndCloseAcrossCounts) {
   EXPECT_GT(moved, 1e-3);
   // Sums in another order: round-off only (positions are ~0.1 m).
   EXPECT_LT(diff, 1e-12);
+}
+
+// The transfer to the grid cut into two chunks gives the same bits with two
+// threads or one: a run may go on alone while another process takes a core
+// (core/adaptive_team.hpp); with two chunks on two threads, the bits of the
+// per-thread split above.
+TEST(MpmThreads, ChunksGiveTheSameBitsOnAnyTeam) {
+  const auto two = with_threads(2, [] { return positions_after(40); });
+  const auto chunks_on_two = with_threads(2, [] { return positions_after(40, 2); });
+  const auto chunks_alone = with_threads(1, [] { return positions_after(40, 2); });
+  const auto chunks_on_three = with_threads(3, [] { return positions_after(40, 2); });
+  ASSERT_EQ(two.size(), chunks_alone.size());
+  for (std::size_t i = 0; i < two.size(); ++i) {
+    ASSERT_EQ(two[i], chunks_on_two[i]) << i;
+    ASSERT_EQ(two[i], chunks_alone[i]) << i;
+    ASSERT_EQ(two[i], chunks_on_three[i]) << i;
+  }
 }
 
 }  // namespace

@@ -9,11 +9,12 @@
 // dem/chunk_partition.hpp) can switch freely: it runs segments of about
 // kSegmentSeconds, mostly with the faster choice, and now and then one with
 // the other to see whether things have changed. The team is only tried
-// against one thread when its threads had to sleep waiting for each other
-// (core/team_sync.hpp) in at least a kSleepyShare of its steps: on a quiet
-// machine they do not, and every segment runs the whole team. A probe that
-// loses makes the next one twice as rare (up to every kMaxProbeEvery
-// segments).
+// against one thread when the caller saw it held up: its threads had to sleep
+// waiting for each other (core/team_sync.hpp) in at least a kSleepyShare of
+// its steps, or the kernel took their cores often (involuntary context
+// switches, at least one per kPreemptedEvery). On a quiet machine neither
+// happens, and every segment runs the whole team. A probe that loses makes the
+// next one twice as rare (up to every kMaxProbeEvery segments).
 //
 // TALUS_TEAM=team or TALUS_TEAM=alone in the environment fixes the choice
 // (benchmarks, tests); results are the same bits either way.
@@ -31,6 +32,15 @@ class AdaptiveTeam {
   // A probe must beat the current choice by this factor to replace it.
   static constexpr double kSwitchMargin = 1.05;
   static constexpr double kSleepyShare = 0.25;
+  static constexpr double kPreemptedEvery = 8e-3;  // s
+
+  // Signs of a held-up team, for record().
+  static bool sleepy(int64_t sleeps, int64_t steps) {
+    return static_cast<double>(sleeps) >= kSleepyShare * static_cast<double>(steps);
+  }
+  static bool preempted(int64_t involuntary_switches, double seconds) {
+    return static_cast<double>(involuntary_switches) * kPreemptedEvery >= seconds;
+  }
 
   explicit AdaptiveTeam(int threads) : threads_(std::max(1, threads)) {
     const char* env = std::getenv("TALUS_TEAM");
@@ -44,17 +54,19 @@ class AdaptiveTeam {
     if (fixed_ > 0) return fixed_;
     return threads_ > 1 && (use_team_ != probing_) ? threads_ : 1;
   }
-  // The steps of the next segment (about kSegmentSeconds at the last speed).
-  int64_t segment_steps() const { return segment_; }
+  // The steps of the next segment (about kSegmentSeconds at the speed last
+  // measured with its team size: a probe of a slowed team stays short too).
+  int64_t segment_steps() const { return segment_[team() > 1]; }
 
-  // A segment of `steps` steps took `seconds` with `team` threads, whose
-  // waits slept `sleeps` times.
-  void record(int team, int64_t steps, double seconds, int64_t sleeps) {
+  // A segment of `steps` steps took `seconds` with `team` threads; `held_up`:
+  // the caller saw signs that a thread lost its core (sleepy(), preempted()).
+  void record(int team, int64_t steps, double seconds, bool held_up) {
     // A segment of a few steps (the end of an output interval) is noise.
     if (threads_ <= 1 || steps < 4 || !(seconds > 0.0)) return;
     const double rate = static_cast<double>(steps) / seconds;
     const bool was_team = team > 1;
-    segment_ = std::clamp<int64_t>(static_cast<int64_t>(rate * kSegmentSeconds), 4, 1 << 20);
+    segment_[was_team] =
+        std::clamp<int64_t>(static_cast<int64_t>(rate * kSegmentSeconds), 4, 1 << 20);
     if (probing_) {
       probing_ = false;
       if (rate > kSwitchMargin * rate_[use_team_]) {
@@ -67,7 +79,7 @@ class AdaptiveTeam {
       return;
     }
     rate_[was_team] = rate;
-    if (was_team && static_cast<double>(sleeps) < kSleepyShare * static_cast<double>(steps)) {
+    if (was_team && !held_up) {
       since_probe_ = 0;  // nothing suggests a thread is held up
       return;
     }
@@ -85,8 +97,8 @@ class AdaptiveTeam {
   bool use_team_ = true;  // the current choice
   bool probing_ = false;  // the next segment tries the other one
   int since_probe_ = 0, probe_every_ = kFirstProbeEvery;
-  int64_t segment_ = 16;
-  double rate_[2] = {0.0, 0.0};  // last measured steps/s alone [0] and as a team [1]
+  int64_t segment_[2] = {16, 16};  // steps alone [0] and as a team [1]
+  double rate_[2] = {0.0, 0.0};    // last measured steps/s alone [0] and as a team [1]
 };
 
 }  // namespace talus

@@ -106,7 +106,7 @@ class Stepper final : public StepperBase<D> {
       sleeps_.store(0, std::memory_order_relaxed);
       run_segment(team, segment);
       adaptive_.record(team, segment, std::chrono::duration<double>(Clock::now() - start).count(),
-                       sleeps_.load(std::memory_order_relaxed));
+                       AdaptiveTeam::sleepy(sleeps_.load(std::memory_order_relaxed), segment));
       done += segment;
     }
     if (step_open_) close_step();

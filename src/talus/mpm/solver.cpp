@@ -79,6 +79,22 @@ void Solver<D>::step(double dt) {
   ++steps;
 }
 
+namespace {
+
+// The items [first, last) of n that OpenMP's static schedule gives thread c of
+// `parts` (the first n % parts threads one more).
+std::pair<std::int64_t, std::int64_t> static_block(std::int64_t n, int parts, int c) {
+  std::int64_t q = n / parts, first = n % parts;
+  if (c < first) {
+    ++q;
+    first = 0;
+  }
+  first += q * c;
+  return {first, first + q};
+}
+
+}  // namespace
+
 // Mass and momentum (and, with forces, internal and gravity forces) of the
 // particles on the nodes.
 template <int D>
@@ -86,49 +102,55 @@ template <class Shape>
 void Solver<D>::to_grid(bool forces) {
   const auto n = static_cast<std::int64_t>(particles.size());
   const std::int64_t nodes = grid.nodes();
-  const int threads = omp_get_max_threads();
-  buffers_.resize(threads);
+  const int chunks = chunks_ > 0 ? chunks_ : omp_get_max_threads();
+  buffers_.resize(chunks);
   const Vec g = gravity();
   const double l = params.gimp_half_width;
   const bool apic = params.transfer == Transfer::Apic;
   bool outside = false;
   std::int64_t bad = 0;
-#pragma omp parallel num_threads(threads)
+#pragma omp parallel
   {
-    NodeBuffer& buf = buffers_[omp_get_thread_num()];
-    buf.mass.assign(nodes, 0.0);
-    buf.momentum.assign(nodes, Vec::Zero());
-    if (forces) buf.force.assign(nodes, Vec::Zero());
     Stencil<D, Shape> st;
-#pragma omp for schedule(static)
-    for (std::int64_t p = 0; p < n; ++p) {
-      if (!st.compute(grid, particles.x[p], l)) {
+    // Chunk c holds the particles OpenMP's static schedule would give thread c
+    // of `chunks`: with one chunk per thread, the bits of a per-thread split.
+    const int team = omp_get_num_threads();
+    for (int c = omp_get_thread_num(); c < chunks; c += team) {
+      NodeBuffer& buf = buffers_[c];
+      buf.mass.assign(nodes, 0.0);
+      buf.momentum.assign(nodes, Vec::Zero());
+      if (forces) buf.force.assign(nodes, Vec::Zero());
+      const auto [first, last] = static_block(n, chunks, c);
+      for (std::int64_t p = first; p < last; ++p) {
+        if (!st.compute(grid, particles.x[p], l)) {
 #pragma omp critical
-        {
-          outside = true;
-          bad = p;
+          {
+            outside = true;
+            bad = p;
+          }
+          continue;
         }
-        continue;
-      }
-      const double m = particles.mass[p];
-      const Vec mv = m * particles.v[p];
-      const auto sigma = particles.state[p].stress.template topLeftCorner<D, D>().eval();
-      const double vol = particles.volume[p];
-      const auto mc = apic ? (m * apic_velocity_gradient<D>(st, particles.affine[p])).eval()
-                           : Eigen::Matrix<double, D, D>::Zero().eval();
-      for (int k = 0; k < st.count; ++k) {
-        const auto a = st.node[k];
-        buf.mass[a] += st.w[k] * m;
-        buf.momentum[a] += st.w[k] * (apic ? (mv + mc * st.dx[k]).eval() : mv);
-        if (forces) buf.force[a] += st.w[k] * m * g - vol * (sigma * st.grad[k]);
+        const double m = particles.mass[p];
+        const Vec mv = m * particles.v[p];
+        const auto sigma = particles.state[p].stress.template topLeftCorner<D, D>().eval();
+        const double vol = particles.volume[p];
+        const auto mc = apic ? (m * apic_velocity_gradient<D>(st, particles.affine[p])).eval()
+                             : Eigen::Matrix<double, D, D>::Zero().eval();
+        for (int k = 0; k < st.count; ++k) {
+          const auto a = st.node[k];
+          buf.mass[a] += st.w[k] * m;
+          buf.momentum[a] += st.w[k] * (apic ? (mv + mc * st.dx[k]).eval() : mv);
+          if (forces) buf.force[a] += st.w[k] * m * g - vol * (sigma * st.grad[k]);
+        }
       }
     }
-    // Sum in thread order: the same result every run for this thread count.
+#pragma omp barrier
+    // Sum in chunk order: the same result for this chunk count on any team.
 #pragma omp for schedule(static)
     for (std::int64_t a = 0; a < nodes; ++a) {
       double m = 0.0;
       Vec mv = Vec::Zero(), f = Vec::Zero();
-      for (int t = 0; t < threads; ++t) {
+      for (int t = 0; t < chunks; ++t) {
         m += buffers_[t].mass[a];
         mv += buffers_[t].momentum[a];
         if (forces) f += buffers_[t].force[a];

@@ -76,6 +76,11 @@ class Solver {
   void step(double dt);
   // One step of time_step().
   double advance();
+  // The particles' transfer to the grid is cut into `chunks` pieces (0: one
+  // per thread of the parallel region), summed in piece order: results depend
+  // on the pieces, not on how many threads compute them. Set it to the thread
+  // count asked for, and a run can go on with fewer threads in the same bits.
+  void set_chunks(int chunks) { chunks_ = chunks; }
 
   Vec gravity() const { return Space<D>::from3(params.gravity); }
 
@@ -95,7 +100,8 @@ class Solver {
     std::vector<double> mass;
     std::vector<Vec> momentum, force;
   };
-  std::vector<NodeBuffer> buffers_;                  // one per thread
+  std::vector<NodeBuffer> buffers_;                  // one per chunk
+  int chunks_ = 0;                                   // set_chunks
   std::vector<RigidNodes<D>> rigid_nodes_;           // one per rigid body
   std::vector<double> smoothing_;                    // per-cell sums (volumetric smoothing)
   std::vector<double> dilation_, nonlocal_scratch_;  // non-local cohesion loss

@@ -1,10 +1,16 @@
 // The MPM method on the run loop: one CFL step at a time, landing exactly on
-// the end time; the energy watch of mpm/health.hpp every tenth step.
+// the end time; the energy watch of mpm/health.hpp every tenth step. With
+// several threads the steps run in segments with the whole team or one thread
+// alone, whichever is faster now (core/adaptive_team.hpp): the solver's chunks
+// follow the thread count asked for, so the bits are the same either way.
 #include "talus/run/methods/mpm.hpp"
 
 #include <fmt/core.h>
+#include <omp.h>
+#include <sys/resource.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 
 #include "talus/core/error.hpp"
@@ -21,6 +27,26 @@ namespace talus::run {
 
 namespace {
 
+// Times the kernel took a core from this process's threads so far.
+std::int64_t involuntary_switches() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return ru.ru_nivcsw;
+}
+
+// The team size of the parallel regions (OpenMP's default) while it lives.
+class TeamSize {
+ public:
+  explicit TeamSize(int threads) : threads_(threads) {}
+  void set(int team) {
+    if (threads_ > 1) omp_set_num_threads(team);
+  }
+  ~TeamSize() { set(threads_); }
+
+ private:
+  int threads_;
+};
+
 std::vector<double> initial_cohesions(const mpm::MpmScenario& sc) {
   std::vector<double> c0;
   for (const auto& m : sc.materials) c0.push_back(mpm::initial_cohesion(m));
@@ -32,7 +58,11 @@ std::vector<double> initial_cohesions(const mpm::MpmScenario& sc) {
 template <int D>
 MpmSimulation<D>::MpmSimulation(mpm::MpmScenario scenario, mpm::Solver<D> solver,
                                 const std::filesystem::path& out, bool resume, int threads)
-    : scenario_(std::move(scenario)), solver_(std::move(solver)), threads_(threads) {
+    : scenario_(std::move(scenario)),
+      solver_(std::move(solver)),
+      threads_(threads),
+      adaptive_(threads) {
+  if (threads_ > 1) solver_.set_chunks(threads_);
   if (out.empty()) {
     files_observer_ = std::make_unique<Observer>();
     return;
@@ -61,17 +91,37 @@ void MpmSimulation<D>::start(bool /*fresh*/) {
 
 template <int D>
 void MpmSimulation<D>::advance(double target, double tolerance, std::int64_t max_steps) {
+  using Clock = std::chrono::steady_clock;
   auto& s = solver_;
   const double end = end_time();
-  for (std::int64_t taken = 0; taken < max_steps; ++taken) {
-    if (s.time >= target - tolerance || s.time >= end - this->tolerance()) break;
-    double dt = s.time_step();
-    // Land exactly on the end time.
-    if (s.time + dt > end) dt = end - s.time;
-    s.step(dt);
-    const bool last = s.time >= end - this->tolerance();
-    // Every 10th step: an O(n) sum beside a step of many O(n) passes.
-    if (blowup_ > 0.0 && (s.steps % 10 == 0 || last)) mpm::check_energy(s, available_, blowup_);
+  TeamSize size(threads_);
+  for (std::int64_t taken = 0; taken < max_steps;) {
+    const int team = adaptive_.team();
+    // libgomp's idle threads spin for milliseconds: going alone, release them.
+    if (threads_ > 1 && team == 1 && last_team_ > 1) omp_pause_resource_all(omp_pause_soft);
+    last_team_ = team;
+    size.set(team);
+    const std::int64_t segment = std::min(max_steps - taken, adaptive_.segment_steps());
+    const auto start = Clock::now();
+    const std::int64_t switches = involuntary_switches();
+    std::int64_t stepped = 0;
+    bool reached = false;
+    for (; stepped < segment; ++stepped) {
+      reached = s.time >= target - tolerance || s.time >= end - this->tolerance();
+      if (reached) break;
+      double dt = s.time_step();
+      // Land exactly on the end time.
+      if (s.time + dt > end) dt = end - s.time;
+      s.step(dt);
+      const bool last = s.time >= end - this->tolerance();
+      // Every 10th step: an O(n) sum beside a step of many O(n) passes.
+      if (blowup_ > 0.0 && (s.steps % 10 == 0 || last)) mpm::check_energy(s, available_, blowup_);
+    }
+    taken += stepped;
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    adaptive_.record(team, stepped, seconds,
+                     AdaptiveTeam::preempted(involuntary_switches() - switches, seconds));
+    if (reached || stepped == 0) break;
   }
 }
 

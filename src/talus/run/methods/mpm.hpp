@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "talus/core/adaptive_team.hpp"
 #include "talus/mpm/output_observer.hpp"
 #include "talus/mpm/scenario.hpp"
 #include "talus/run/simulation.hpp"
@@ -35,6 +36,8 @@ class MpmSimulation : public Simulation {
   mpm::MpmScenario scenario_;
   mpm::Solver<D> solver_;
   int threads_;
+  AdaptiveTeam adaptive_;  // the team or one thread, segment by segment
+  int last_team_ = 0;
   std::unique_ptr<mpm::MpmOutputs<D>> files_;
   std::unique_ptr<Observer> files_observer_;
   double blowup_ = 0.0, available_ = 0.0;
