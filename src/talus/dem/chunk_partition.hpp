@@ -2,13 +2,12 @@
 // How the threads of a DEM step share the particles and the pair list.
 //
 // The particles (sorted by cell at each neighbour-list build) are cut into
-// contiguous chunks, several per thread, and each chunk gets the pairs whose
-// first particle lies in it (pairs are sorted by it, and j > i). Each thread
-// takes its own chunks first (the same every step: its particles stay in its
-// core's cache), then the chunks other threads have not yet taken, from the
-// far end of theirs (ChunkClaims). A thread that runs slower (its core shared
-// with another process) so does less of the step, and no thread waits long
-// for a partner that lost its core. A step needs no barrier between the pair
+// contiguous chunks, kChunksPerThread per thread asked for, and each chunk gets
+// the pairs whose first particle lies in it (pairs are sorted by it, and
+// j > i). Each thread takes its own chunks first (the same every step: its
+// particles stay in its core's cache), then, with more than one chunk per
+// thread, chunks other threads have not yet taken (ChunkClaims); one thread
+// alone takes them all. A step needs no barrier between the pair
 // forces and the particle passes: a chunk finishes the particles that no
 // earlier chunk's pairs reach at once, and the rest once those chunks have
 // scattered their pairs; a thread scatters all the chunks it takes before it
@@ -30,9 +29,11 @@
 
 namespace talus::dem {
 
-// Chunks per thread: enough that a thread at half speed leaves its share to
-// the others in pieces; few enough that the chunks' shared particles (one
-// layer of cells at each cut) stay a small part of the work.
+// Chunks per thread asked for. More would let a fast thread take a slowed
+// one's work in pieces, but each cut adds a slab of shared particles: on the
+// quiet 2-vCPU machine two per thread cost 4 %, four 13 % of a two-thread step.
+// With one, no chunk is ever taken from another thread (ChunkClaims' rule),
+// and a slowed thread is handled by running alone (core/adaptive_team.hpp).
 inline constexpr int kChunksPerThread = 1;
 
 // Which thread computes which chunk in one pass: thread t's own chunks are

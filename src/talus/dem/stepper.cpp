@@ -539,7 +539,6 @@ class Stepper final : public StepperBase<D> {
   // chunk order.
   void prepare_wall_accumulators(int chunks) {
     const int nw = static_cast<int>(s_.walls.size());
-    wall_chunks_ = chunks;
     wall_acc_.assign(static_cast<std::size_t>(chunks) * acc_stride(), Vec3::Zero());
     pivots_.resize(nw);
     moving_.resize(nw);
@@ -559,9 +558,9 @@ class Stepper final : public StepperBase<D> {
     for (int w = 0; w < nw; ++w) {
       s_.walls[w].force.setZero();
       s_.walls[w].torque.setZero();
-      for (int t = 0; t < wall_chunks_; ++t) {
-        s_.walls[w].force += wall_acc_[static_cast<std::size_t>(t) * acc_stride() + 2 * w];
-        s_.walls[w].torque += wall_acc_[static_cast<std::size_t>(t) * acc_stride() + 2 * w + 1];
+      for (std::size_t t = 0; t < wall_acc_.size() / acc_stride(); ++t) {
+        s_.walls[w].force += wall_acc_[t * acc_stride() + 2 * w];
+        s_.walls[w].torque += wall_acc_[t * acc_stride() + 2 * w + 1];
       }
     }
   }
@@ -686,7 +685,6 @@ class Stepper final : public StepperBase<D> {
   std::vector<double> moved_;                      // each thread's largest squared drift this step
   bool rebuild_now_ = false, team_tasks_ = false;  // decided by serial_part
   int64_t force_pass_ = 0;                         // counts the force computations
-  int wall_chunks_ = 1;                            // blocks of wall sums in wall_acc_
   std::vector<Vec3> wall_acc_, pivots_;
   std::vector<char> moving_, active_;
   int64_t pair_touching_ = 0, wall_touching_ = 0;
