@@ -136,6 +136,21 @@ void check_inside(const DemScenario& sc, const DemSystem<D>& s) {
   }
 }
 
+// A wall striking a particle at speed v presses it in by about v t_c, t_c
+// being the critical step at that impact speed (exactly v sqrt(m/k) for
+// linear springs, 1.4 times that for Hertz at the same speed). Deeper than
+// the smallest radius, particles pass through the wall and the contact forces
+// are meaningless: the run is refused before it starts.
+void check_wall_speed(const geometry::Wall* wall, std::size_t index, double v, double t_c,
+                      double r_min) {
+  if (!wall || !(v * t_c > r_min)) return;
+  throw InputError(fmt::format(
+      "walls.{}.motion: wall '{}' moves at up to {:.4g} m/s; a particle it strikes would be "
+      "pressed about {:.3g} m into it, more than the smallest particle radius ({:.3g} m), and "
+      "would pass through it. Slow the wall below {:.3g} m/s or stiffen the contacts",
+      index, wall->name, v, v * t_c, r_min, r_min / t_c));
+}
+
 // Settles packings under gravity with the real contact law until the kinetic
 // energy is a small fraction of m g d (Kuen: "until the kinetic energy is negligible").
 template <int D>
@@ -193,13 +208,14 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   if (!opt.place) return run;
 
   int64_t id = 0;
-  double r_max = 0.0, v_max = 0.0;
+  double r_max = 0.0, r_min = 1e300, v_max = 0.0;
   for (const Placed& q : place_particles(sc, sc.run.seed)) {
     const MaterialParams& m = sc.materials[q.material];
     if (!(q.r > 0.0)) throw InputError("[[particles]]: radius must be positive");
     s.particles.add(Space<D>::from3(q.x), Space<D>::from3(q.v), Space<D>::rot_from3(q.w), q.r,
                     m.density, q.material, id++);
     r_max = std::max(r_max, q.r);
+    r_min = std::min(r_min, q.r);
     v_max = std::max(v_max, q.v.norm() + q.w.norm() * q.r);
   }
   check_inside(sc, s);
@@ -207,11 +223,18 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   if (sc.contact.lock_rotation)
     for (auto& w : s.particles.w) w = Space<D>::rot_zero();
   s.skin = sc.run.skin > 0.0 ? sc.run.skin : 0.2 * r_max;
-  // Hertz laws need an impact speed: the fastest initial particle or a fall
-  // through the domain height, at least 1 m/s.
+  // Hertz laws need an impact speed: the fastest initial particle, a fall
+  // through the domain height or the fastest wall striking a particle, at least 1 m/s.
   const double height = s.has_domain() ? (sc.run.domain_max - sc.run.domain_min).maxCoeff() : 1.0;
-  s.reference_speed = std::max({1.0, 2.0 * v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
+  std::size_t fastest = 0;
+  for (std::size_t w = 0; w < s.walls.size(); ++w)
+    if (s.walls[w].top_speed() > s.walls[fastest].top_speed()) fastest = w;
+  const double v_wall = s.walls.empty() ? 0.0 : s.walls[fastest].top_speed();
+  s.reference_speed =
+      std::max({1.0, 2.0 * v_max, v_wall + v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
   s.critical_time_step = run->stepper->critical_time_step(s.reference_speed);
+  check_wall_speed(s.walls.empty() ? nullptr : &s.walls[fastest], fastest, v_wall,
+                   s.critical_time_step, r_min);
   if (sc.run.time_step > 0.0) {
     if (sc.run.time_step > s.critical_time_step) {
       // Name the keys behind the critical step: the lightest particle's material.
@@ -252,6 +275,7 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
     for (auto& w : s.particles.w) w = Space<D>::rot_zero();
     for (auto& w : s.walls) {
       w.impulse.setZero();
+      w.work = 0.0;
       w.reset_force_extremes();
     }
     for (auto& m : s.membranes) std::fill(m.body.v.begin(), m.body.v.end(), Vec3::Zero());

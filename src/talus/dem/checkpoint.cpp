@@ -12,7 +12,8 @@ constexpr const char* kMagic = "talus-dem-checkpoint";
 // 4: membranes (state and contact springs) and the walls' servo state.
 // 5: the critical step, its reference speed and the settling time (a resume
 // no longer places the particles it would compute them from).
-constexpr int32_t kVersion = 5;
+// 6: the work each wall has done, the kinetic energy removed particles took along.
+constexpr int32_t kVersion = 6;
 
 struct PairIndex {
   int32_t i, j;
@@ -25,6 +26,7 @@ void transfer(Ar& ar, System& s) {
   ar(s.time), ar(s.step), ar(s.dt), ar(s.removed), ar(s.skin), ar(s.wall_displacement_at_build),
       ar(s.wall_angle_at_build);
   ar(s.critical_time_step), ar(s.reference_speed), ar(s.settle_time);
+  ar(s.removed_kinetic_energy);
   ar(p.x), ar(p.v), ar(p.f), ar(p.w), ar(p.t), ar(p.r), ar(p.inv_m), ar(p.inv_I), ar(p.m);
   ar(p.material), ar(p.id), ar(p.contacts), ar(p.wall_contacts);
   ar(s.pair_contacts), ar(s.wall_contacts);
@@ -98,7 +100,7 @@ void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
   w.put(pairs), w.put(shear), w.put(roll), w.put(wshear), w.put(wroll);
   w.put(nl.skin());
   for (const auto& wall : s.walls) {
-    w.put(wall.force), w.put(wall.torque), w.put(wall.impulse);
+    w.put(wall.force), w.put(wall.torque), w.put(wall.impulse), w.put(wall.work);
     w.put(wall.servo_travel), w.put(wall.servo_speed);
   }
   for (const auto& mb : s.membranes) {
@@ -147,7 +149,7 @@ void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
     nl.wall_history[k].roll = wroll[k];
   }
   for (auto& wall : s.walls) {
-    r.get(wall.force), r.get(wall.torque), r.get(wall.impulse);
+    r.get(wall.force), r.get(wall.torque), r.get(wall.impulse), r.get(wall.work);
     r.get(wall.servo_travel), r.get(wall.servo_speed);
   }
   for (auto& mb : s.membranes) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "talus/core/error.hpp"
 
@@ -43,7 +44,19 @@ double available_energy(const DemSystem<D>& s) {
 }
 
 template <int D>
-void check_health(const DemRun<D>& run, double e_avail, double factor) {
+double wall_work(const DemSystem<D>& s) {
+  double sum = 0.0;
+  for (const auto& w : s.walls) sum += w.work;
+  return sum;
+}
+
+template <int D>
+EnergyBudget energy_budget(const DemSystem<D>& s) {
+  return {available_energy(s), wall_work(s), s.removed_kinetic_energy};
+}
+
+template <int D>
+void check_health(const DemRun<D>& run, const EnergyBudget& budget, double factor) {
   const auto& s = run.system;
   const double ke = kinetic_energy(s.particles);
   if (!std::isfinite(ke)) {
@@ -62,19 +75,33 @@ void check_health(const DemRun<D>& run, double e_avail, double factor) {
             "t = {:.6g} s: membrane '{}' particle {} has a non-finite velocity. Check the time "
             "step (now {:.4g} s, critical {:.4g} s) and the membrane constants",
             s.time, m.name, i, s.dt, run.system.critical_time_step));
-  bool walls_move = false;
-  for (const auto& w : s.walls) walls_move = walls_move || w.moves();
-  if (factor > 0.0 && !walls_move && ke > factor * e_avail)
-    throw RunError(fmt::format(
-        "t = {:.6g} s: kinetic energy {:.4g} J exceeds {} times the energy available at the "
-        "start ({:.4g} J): the run is unstable. Reduce the time step (now {:.4g} s, critical "
-        "{:.4g} s)",
-        s.time, ke, factor, e_avail, s.dt, run.system.critical_time_step));
+  if (!(factor > 0.0)) return;
+  const double put_in = std::max(0.0, wall_work(s) - budget.wall_work_at_start);
+  const double gained = ke + (s.removed_kinetic_energy - budget.removed_at_start);
+  if (gained <= factor * (budget.available + put_in)) return;
+  const std::string removed =
+      gained > ke ? fmt::format(" (with {:.4g} J carried out of the domain by removed particles)",
+                                gained - ke)
+                  : std::string();
+  const std::string walls =
+      put_in > 0.0
+          ? fmt::format(" plus the work the moving walls have done since ({:.4g} J)", put_in)
+          : std::string();
+  throw RunError(fmt::format(
+      "t = {:.6g} s: kinetic energy {:.4g} J{} exceeds {} times the energy available at the "
+      "start ({:.4g} J){}: the run is unstable. Reduce the time step (now {:.4g} s, critical "
+      "{:.4g} s)",
+      s.time, gained, removed, factor, budget.available, walls, s.dt,
+      run.system.critical_time_step));
 }
 
 template double available_energy<2>(const DemSystem<2>&);
 template double available_energy<3>(const DemSystem<3>&);
-template void check_health<2>(const DemRun<2>&, double, double);
-template void check_health<3>(const DemRun<3>&, double, double);
+template double wall_work<2>(const DemSystem<2>&);
+template double wall_work<3>(const DemSystem<3>&);
+template EnergyBudget energy_budget<2>(const DemSystem<2>&);
+template EnergyBudget energy_budget<3>(const DemSystem<3>&);
+template void check_health<2>(const DemRun<2>&, const EnergyBudget&, double);
+template void check_health<3>(const DemRun<3>&, const EnergyBudget&, double);
 
 }  // namespace talus::dem

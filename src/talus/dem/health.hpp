@@ -11,9 +11,26 @@ namespace talus::dem {
 template <int D>
 double available_energy(const DemSystem<D>& system);
 
-// Throws RunError on a non-finite velocity, or when the kinetic energy exceeds
-// `factor` (> 0) times `available` while no wall moves.
+// The work all walls have done on the particles so far (geometry::Wall::work).
 template <int D>
-void check_health(const DemRun<D>& run, double available, double factor);
+double wall_work(const DemSystem<D>& system);
+
+// What the kinetic energy is checked against: the energy available when the
+// run (or its resumed part) started, and the walls' work then.
+struct EnergyBudget {
+  double available = 0.0;
+  double wall_work_at_start = 0.0;
+  double removed_at_start = 0.0;  // DemSystem::removed_kinetic_energy
+};
+template <int D>
+EnergyBudget energy_budget(const DemSystem<D>& system);
+
+// Throws RunError on a non-finite velocity, or when the kinetic energy, with
+// what particles removed since the budget was taken carried out, exceeds
+// `factor` (> 0) times the budget's available energy plus the work the walls
+// have done since (when that is positive): the particles cannot gain more
+// than they had and what moving walls gave them.
+template <int D>
+void check_health(const DemRun<D>& run, const EnergyBudget& budget, double factor);
 
 }  // namespace talus::dem

@@ -306,6 +306,7 @@ class Stepper final : public StepperBase<D> {
     close_forces();
     for (auto& w : s_.walls) {
       w.impulse += w.force * s_.dt;
+      if (!s_.settling) w.add_work(s_.time, s_.dt);
       w.note_force();
     }
     ++s_.step;
@@ -382,6 +383,13 @@ class Stepper final : public StepperBase<D> {
     }
     if (keep.size() == p.size()) return;
     s_.removed += static_cast<int64_t>(p.size() - keep.size());
+    for (std::size_t i = 0, k = 0; i < p.size(); ++i) {
+      if (k < keep.size() && keep[k] == static_cast<int>(i)) {
+        ++k;
+        continue;
+      }
+      s_.removed_kinetic_energy += 0.5 * p.m[i] * p.v[i].squaredNorm();
+    }
     // Renumber the lists for the survivors, so the next build can carry their history.
     auto& nl = s_.neighbours;
     std::vector<int> new_index(p.size(), -1);

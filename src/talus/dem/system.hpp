@@ -34,7 +34,10 @@ struct DemSystem {
   Vec3 domain_min = Vec3::Zero(), domain_max = Vec3::Zero();  // empty box = no removal
   double skin = 0.0;
   int threads = 1;
-  int64_t removed = 0;    // particles that left the domain
+  int64_t removed = 0;  // particles that left the domain
+  // Their kinetic energy (1/2 m v^2) when they were removed: the energy check
+  // still counts it, so a blow-up that throws every particle out is caught.
+  double removed_kinetic_energy = 0.0;
   bool settling = false;  // the builder settles the packing: walls stay as at t = 0
   // How the builder chose the step, kept for diagnostics and the summary; in
   // the checkpoint, as a resume does not place the particles again.

@@ -13,13 +13,8 @@ double wall_motion_since(const std::vector<geometry::Wall>& walls, double t,
     const auto& w = walls[k];
     if (!w.moves()) continue;
     double d = (w.displacement(t) - displacement_at_build[k]).norm();
-    if (w.motion.angular_velocity.squaredNorm() > 0.0) {
-      double reach = 0.0;
-      for (const auto& prim : w.reference)
-        for (const Vec3& q : {prim.p0, prim.p1, prim.p2})
-          reach = std::max(reach, (q - w.motion.pivot).norm() + prim.radius);
-      d += std::abs(w.rotation_angle(t) - angle_at_build[k]) * reach;
-    }
+    if (w.motion.angular_velocity.squaredNorm() > 0.0)
+      d += std::abs(w.rotation_angle(t) - angle_at_build[k]) * w.reach();
     moved = std::max(moved, d);
   }
   return moved;

@@ -225,11 +225,13 @@ struct WallForces {
 };
 
 // Each wall's sums of the step become its force and torque; a closed step
-// also adds them to the impulse and the force extremes (geometry::Wall).
-// `wall` holds kWallFields vectors per wall: force, torque, impulse, force_max, force_min.
-inline constexpr int kWallFields = 5;
+// also adds them to the impulse, the force extremes and the work (geometry::Wall).
+// `wall` holds kWallFields vectors per wall: force, torque, impulse, force_max,
+// force_min, and (work, 0, 0).
+inline constexpr int kWallFields = 6;
 struct CloseWalls {
   Vec3 *sum, *wall;
+  const WallState* state;
   double dt;
   bool close_step;
   TALUS_HD void operator()(int w) const {
@@ -242,6 +244,8 @@ struct CloseWalls {
     out[2] += out[0] * dt;
     out[3] = out[3].cwiseMax(out[0]);
     out[4] = out[4].cwiseMin(out[0]);
+    const WallState& m = state[w];
+    if (m.moving) out[5].x() -= (out[0].dot(m.v0) + out[1].dot(m.omega)) * dt;
   }
 };
 

@@ -8,6 +8,7 @@
 #include <thrust/count.h>
 #include <thrust/device_vector.h>
 #include <thrust/execution_policy.h>
+#include <thrust/functional.h>
 #include <thrust/gather.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/reduce.h>
@@ -89,6 +90,14 @@ struct NotFinite {
       if (!(x[d] - x[d] == 0.0)) return true;  // inf - inf and NaN - NaN are NaN
     return false;
   }
+};
+
+// Kinetic energy 1/2 m v^2 of particle i.
+template <int D>
+struct KineticEnergyOf {
+  const typename Space<D>::Vec* v;
+  const double* m;
+  TALUS_HD double operator()(int i) const { return 0.5 * m[i] * v[i].squaredNorm(); }
 };
 
 struct Box {
@@ -296,8 +305,9 @@ class GpuStepper final : public StepperBase<D> {
   void upload_walls() {
     std::vector<Vec3> block;
     for (const auto& w : s_.walls) {
-      const Vec3* fields[kWallFields] = {&w.force, &w.torque, &w.impulse, &w.force_max,
-                                         &w.force_min};
+      const Vec3 work(w.work, 0, 0);
+      const Vec3* fields[kWallFields] = {&w.force,     &w.torque,    &w.impulse,
+                                         &w.force_max, &w.force_min, &work};
       for (const Vec3* v : fields) block.push_back(*v);
     }
     to_device(block, wall_);
@@ -380,6 +390,7 @@ class GpuStepper final : public StepperBase<D> {
       auto& w = s_.walls[k];
       const Vec3* b = block.data() + kWallFields * k;
       w.force = b[0], w.torque = b[1], w.impulse = b[2], w.force_max = b[3], w.force_min = b[4];
+      w.work = b[5].x();
     }
     s_.neighbours.builds = static_cast<int>(builds_);
   }
@@ -469,7 +480,7 @@ class GpuStepper final : public StepperBase<D> {
   void close_walls(bool close_step) {
     thrust::for_each_n(policy(), thrust::counting_iterator<int>(0),
                        static_cast<int>(s_.walls.size()),
-                       CloseWalls{raw(wall_sum_), raw(wall_), s_.dt, close_step});
+                       CloseWalls{raw(wall_sum_), raw(wall_), raw(wall_state_), s_.dt, close_step});
   }
 
   // Moves the walls to the current time and sends what changed; true when a
@@ -530,6 +541,10 @@ class GpuStepper final : public StepperBase<D> {
     const int kept = static_cast<int>(
         thrust::lower_bound(thrust::device, keys_.begin(), keys_.end(), kRemoved) - keys_.begin());
     s_.removed += n - kept;
+    if (kept < n)  // order_ lists the removed ones last, by their index before the sort
+      s_.removed_kinetic_energy += thrust::transform_reduce(
+          policy(), order_.begin() + kept, order_.begin() + n, KineticEnergyOf<D>{raw(v_), raw(m_)},
+          0.0, thrust::plus<double>());
     permute_particles(kept);
     find_pairs(grid);
     x_ref_ = x_;

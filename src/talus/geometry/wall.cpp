@@ -100,6 +100,32 @@ Vec3 Wall::velocity_at(const Vec3& point, double t) const {
   return v;
 }
 
+void Wall::add_work(double t, double dt) {
+  if (!moves()) return;
+  // The particles feel -force, applied where each touches the wall, moving
+  // with velocity_at(pivot) + omega x (point - pivot): summed over the
+  // contacts this is -(force . v(pivot) + torque . omega), torque being about the pivot.
+  work -= (force.dot(velocity_at(pivot_at(t), t)) + torque.dot(angular_velocity_at(t))) * dt;
+}
+
+double Wall::reach() const {
+  double r = 0.0;
+  for (const auto& prim : reference)
+    for (const Vec3& q : {prim.p0, prim.p1, prim.p2})
+      r = std::max(r, (q - motion.pivot).norm() + prim.radius);
+  return r;
+}
+
+double Wall::top_speed() const {
+  if (!moves()) return 0.0;
+  double v = 0.0;
+  if (motion.move_stop > motion.move_start)
+    v += motion.velocity.norm() + motion.angular_velocity.norm() * reach();
+  v += 2 * M_PI * std::abs(motion.frequency * motion.amplitude);
+  if (has_servo()) v += std::abs(motion.servo_speed);
+  return v;
+}
+
 Vec3 Wall::angular_velocity_at(double t) const {
   return moving_at(motion, t) ? motion.angular_velocity : Vec3::Zero();
 }

@@ -37,6 +37,10 @@ struct Wall {
   Vec3 force = Vec3::Zero();
   Vec3 torque = Vec3::Zero();
   Vec3 impulse = Vec3::Zero();
+  // Work the wall has done on what touches it (J): the time integral of
+  // -(force . v(pivot) + torque . omega), the power its motion delivers; zero
+  // for a wall that never moves. The energy check counts it as energy put in.
+  double work = 0.0;
   // Component-wise extremes of `force` over the steps closed since the run
   // loop last reset them (after each series row): what a force sensor read
   // every step records. An interval's mean force (from `impulse`) smooths
@@ -54,6 +58,8 @@ struct Wall {
     force_max = force_max.cwiseMax(force);
     force_min = force_min.cwiseMin(force);
   }
+  // Adds a closed step's share of `work`, its forces taken at time t.
+  void add_work(double t, double dt);
   void reset_force_extremes() {
     force_max.setConstant(-std::numeric_limits<double>::infinity());
     force_min.setConstant(std::numeric_limits<double>::infinity());
@@ -89,6 +95,11 @@ struct Wall {
   // The servo's step from t to t + dt (call before update(t + dt)), from the
   // force of the step that ended at t; no-op without a servo or from servo_stop on.
   void advance_servo(double t, double dt);
+  // Farthest distance of the given geometry from the pivot (at rest).
+  double reach() const;
+  // Largest speed any point of the wall reaches in the run: translation plus
+  // rotation times reach() plus the vibration's 2 pi f A, or the servo's top speed.
+  double top_speed() const;
   // Axis-aligned box around the current primitives.
   void bounds(Vec3& lo, Vec3& hi) const;
 };

@@ -71,7 +71,7 @@ template <int D>
 void DemSimulation<D>::start(bool fresh) {
   auto& s = run_.system;
   end_step_ = std::llround(control_.duration / s.dt);
-  available_ = dem::available_energy(s);
+  budget_ = dem::energy_budget(s);
   const auto& f = control_.friction_change;
   change_step_ = f ? std::llround(f->time / s.dt) : std::numeric_limits<std::int64_t>::max();
   // Due already (a resumed run past it, or a change at t = 0): before anything.
@@ -107,7 +107,7 @@ void DemSimulation<D>::advance(double target, double tolerance, std::int64_t max
       dem::apply_friction_change(run_, *control_.friction_change);
       run_.stepper->resume();
     }
-    dem::check_health(run_, available_, control_.ke_blowup_factor);
+    dem::check_health(run_, budget_, control_.ke_blowup_factor);
   }
 }
 
@@ -135,7 +135,8 @@ MethodReport DemSimulation<D>::report() const {
     walls.push_back({{"name", wall.name},
                      {"force_N", {wall.force.x(), wall.force.y(), wall.force.z()}},
                      {"peak_force_N", files_ ? files_->peak_wall_force[w] : 0.0},
-                     {"impulse_Ns", {wall.impulse.x(), wall.impulse.y(), wall.impulse.z()}}});
+                     {"impulse_Ns", {wall.impulse.x(), wall.impulse.y(), wall.impulse.z()}},
+                     {"work_J", wall.work}});
   }
   r.resolved = {{"time_step_s", s.dt},
                 {"critical_time_step_s", s.critical_time_step},
@@ -146,6 +147,7 @@ MethodReport DemSimulation<D>::report() const {
                 {"backend", device_.empty() ? "cpu" : "gpu"}};
   if (!device_.empty()) r.resolved["device"] = device_;
   r.metrics = {{"particles", p.size()},
+               {"removed_kinetic_energy_J", s.removed_kinetic_energy},
                {"particles_removed", s.removed},
                {"kinetic_energy_J", dem::kinetic_energy(p)},
                {"rotational_energy_J", dem::rotational_energy(p)},

@@ -10,6 +10,7 @@
 
 #include "talus/dem/builder.hpp"
 #include "talus/dem/friction_change.hpp"
+#include "talus/dem/health.hpp"
 #include "talus/dem/output_observer.hpp"
 #include "talus/run/simulation.hpp"
 
@@ -64,7 +65,7 @@ class DemSimulation : public Simulation {
   std::string device_;  // the GPU it runs on; empty on the CPU
   std::int64_t end_step_ = 0, change_step_ = 0, health_every_ = 1;
   bool changed_before_ = false;
-  double available_ = 0.0;
+  dem::EnergyBudget budget_;
 };
 
 }  // namespace talus::run
