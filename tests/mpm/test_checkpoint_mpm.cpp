@@ -84,6 +84,8 @@ TEST(MpmCheckpoint, ResumedRunEndsBitForBitLikeTheUninterruptedOne) {
   }
   EXPECT_EQ(resumed.rigid_bodies[0].x, full.rigid_bodies[0].x);
   EXPECT_EQ(resumed.rigid_bodies[0].angle, full.rigid_bodies[0].angle);
+  EXPECT_NE(full.rigid_bodies[0].work, 0.0);
+  EXPECT_EQ(resumed.rigid_bodies[0].work, full.rigid_bodies[0].work);
 }
 
 TEST(MpmCheckpoint, CheckpointOfAnotherScenarioIsRefused) {

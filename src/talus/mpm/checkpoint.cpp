@@ -12,7 +12,8 @@ namespace talus::mpm {
 namespace {
 constexpr const char* kMagic = "talus-mpm-checkpoint";
 // 2: the membranes' state follows the rigid bodies (version 1 had none).
-constexpr int32_t kVersion = 2;
+// 3: the work each rigid body has done.
+constexpr int32_t kVersion = 3;
 
 // One function serves both directions so the two can never drift apart. The
 // material states go field by field (bool is not archivable as a vector).
@@ -22,7 +23,7 @@ void transfer(Ar& ar, S& s) {
   ar(s.time), ar(s.steps), ar(s.last_dt);
   ar(p.x), ar(p.v), ar(p.mass), ar(p.volume), ar(p.volume0), ar(p.velocity_gradient),
       ar(p.material), ar(p.affine);
-  for (auto& r : s.rigid_bodies) ar(r.x), ar(r.normal), ar(r.hinge), ar(r.angle);
+  for (auto& r : s.rigid_bodies) ar(r.x), ar(r.normal), ar(r.hinge), ar(r.angle), ar(r.work);
   // All of a membrane's state; what the scenario rebuilds (masses, rest
   // shapes, fixed nodes) goes too, so a resumed run cannot depend on
   // rebuilding it bit for bit.

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <type_traits>
 
 #include "talus/core/error.hpp"
@@ -59,17 +61,27 @@ double available_energy(const Solver<D>& s) {
 }
 
 template <int D>
-bool drives_energy_in(const Solver<D>& s) {
-  for (const auto& r : s.rigid_bodies)
-    if (!r.motion.velocity.isZero() || !r.motion.angular_velocity.isZero()) return true;
-  return false;
+double rigid_work(const Solver<D>& s) {
+  double w = 0.0;
+  for (const auto& r : s.rigid_bodies) w += r.work;
+  return w;
 }
 
 template <int D>
-void check_energy(const Solver<D>& s, double available, double factor) {
+EnergyBudget energy_budget(const Solver<D>& s) {
+  return {available_energy(s), rigid_work(s)};
+}
+
+template <int D>
+void check_energy(const Solver<D>& s, const EnergyBudget& budget, double factor) {
   if (factor <= 0.0) return;
   const double ke = total_kinetic_energy(s);
+  const double put_in = std::max(0.0, rigid_work(s) - budget.rigid_work_at_start);
+  const double available = budget.available + put_in;
   if (std::isfinite(ke) && ke <= factor * available) return;
+  const std::string bodies =
+      put_in > 0.0 ? fmt::format(", plus {:.4g} J of work the rigid bodies have done since", put_in)
+                   : std::string();
   std::string hint;
   for (const auto& m : s.materials)
     if (const auto* dp = std::get_if<DruckerPrager>(&m);
@@ -82,18 +94,20 @@ void check_energy(const Solver<D>& s, double available, double factor) {
   throw RunError(fmt::format(
       "t = {:.6g} s: kinetic energy {:.4g} J exceeds {} times the energy the run could release "
       "from its start ({:.4g} J: kinetic, elastic, and potential down to the grid's lowest "
-      "corner): the run is unstable. Check the time step (last {:.4g} s; [run] cfl) and the "
+      "corner{}): the run is unstable. Check the time step (last {:.4g} s; [run] cfl) and the "
       "material constants{}",
-      s.time, ke, factor, available, s.last_dt, hint));
+      s.time, ke, factor, budget.available, bodies, s.last_dt, hint));
 }
 
 template double total_kinetic_energy<2>(const Solver<2>&);
 template double total_kinetic_energy<3>(const Solver<3>&);
 template double available_energy<2>(const Solver<2>&);
 template double available_energy<3>(const Solver<3>&);
-template bool drives_energy_in<2>(const Solver<2>&);
-template bool drives_energy_in<3>(const Solver<3>&);
-template void check_energy<2>(const Solver<2>&, double, double);
-template void check_energy<3>(const Solver<3>&, double, double);
+template double rigid_work<2>(const Solver<2>&);
+template double rigid_work<3>(const Solver<3>&);
+template EnergyBudget energy_budget<2>(const Solver<2>&);
+template EnergyBudget energy_budget<3>(const Solver<3>&);
+template void check_energy<2>(const Solver<2>&, const EnergyBudget&, double);
+template void check_energy<3>(const Solver<3>&, const EnergyBudget&, double);
 
 }  // namespace talus::mpm

@@ -18,16 +18,26 @@ double total_kinetic_energy(const Solver<D>& s);
 template <int D>
 double available_energy(const Solver<D>& s);
 
-// True when a rigid body is given a motion (it can feed energy in).
+// The work all rigid bodies have done on the material (RigidBody::work).
 template <int D>
-bool drives_energy_in(const Solver<D>& s);
+double rigid_work(const Solver<D>& s);
 
-// Throws RunError when the kinetic energy exceeds factor * available
-// (factor <= 0: never). The message names the time step and, for a
+// What the kinetic energy is checked against: the energy available when the
+// run (or its resumed part) started, and the rigid bodies' work then.
+struct EnergyBudget {
+  double available = 0.0;
+  double rigid_work_at_start = 0.0;
+};
+template <int D>
+EnergyBudget energy_budget(const Solver<D>& s);
+
+// Throws RunError when the kinetic energy exceeds factor times the budget's
+// available energy plus the work the rigid bodies have done since (when
+// positive; factor <= 0: never). The message names the time step and, for a
 // Drucker-Prager material whose dilatancy lets plastic flow do negative work,
 // that angle.
 template <int D>
-void check_energy(const Solver<D>& s, double available, double factor);
+void check_energy(const Solver<D>& s, const EnergyBudget& budget, double factor);
 
 // Largest dilatancy angle (rad) at which the Drucker-Prager plastic work
 // sqrt(J2) + 9 sin(psi) p stays non-negative on the cone

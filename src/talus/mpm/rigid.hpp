@@ -52,6 +52,10 @@ struct RigidBody {
 
   // Rotation angle since t = 0 (2D: angle about z).
   double angle = 0.0;
+  // Work its contact has done on the material (J; J/m in 2D): per step and
+  // node, the momentum the contact gave, m (v_after - v_before), times the
+  // body's velocity there. Zero for a body at rest; the energy check counts it.
+  double work = 0.0;
 
   // Time in [t0, t1] during which the motion is active.
   double active_time(double t0, double t1) const;

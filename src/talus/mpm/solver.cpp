@@ -309,20 +309,22 @@ void Solver<D>::rigid_to_grid(double dt) {
 template <int D>
 void Solver<D>::rigid_contact(double mass_floor) {
   for (std::size_t b = 0; b < rigid_bodies.size(); ++b) {
-    const RigidBody<D>& body = rigid_bodies[b];
+    RigidBody<D>& body = rigid_bodies[b];
     const RigidNodes<D>& nodes = rigid_nodes_[b];
+    double work = 0.0;
     for (const auto a : nodes.touched) {
       if (grid.mass[a] <= mass_floor) continue;
       const Vec vr = nodes.momentum[a] / nodes.weight[a];
       const double g = nodes.normal[a].norm();
+      const Vec before = grid.velocity[a];
       // Stick, or no normal (opposite faces cancel): the rigid velocity.
-      if (body.contact == RigidContact::Stick || g == 0.0) {
+      if (body.contact == RigidContact::Stick || g == 0.0)
         grid.velocity[a] = vr;
-        continue;
-      }
-      grid.velocity[a] =
-          friction_contact<Vec>(grid.velocity[a], vr, -nodes.normal[a] / g, body.friction);
+      else
+        grid.velocity[a] = friction_contact<Vec>(before, vr, -nodes.normal[a] / g, body.friction);
+      work += grid.mass[a] * (grid.velocity[a] - before).dot(vr);
     }
+    body.work += work;
   }
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "talus/core/adaptive_team.hpp"
+#include "talus/mpm/health.hpp"
 #include "talus/mpm/output_observer.hpp"
 #include "talus/mpm/scenario.hpp"
 #include "talus/run/simulation.hpp"
@@ -40,7 +41,8 @@ class MpmSimulation : public Simulation {
   int last_team_ = 0;
   std::unique_ptr<mpm::MpmOutputs<D>> files_;
   std::unique_ptr<Observer> files_observer_;
-  double blowup_ = 0.0, available_ = 0.0;
+  double blowup_ = 0.0;
+  mpm::EnergyBudget budget_;
 };
 
 }  // namespace talus::run
