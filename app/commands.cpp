@@ -27,8 +27,8 @@ namespace {
 
 void progress_line(const run::Progress& p) {
   const double left = p.steps_per_s > 0 ? (p.end - p.time) / p.time_step / p.steps_per_s : 0.0;
-  fmt::print(stderr, "\r  t = {:.4f} / {:.4f} s   {:.0f} steps/s   {:.0f} s left   ", p.time, p.end,
-             p.steps_per_s, left);
+  fmt::print(stderr, "\r  t = {:.4f} / {:.4f} s   {:.0f} steps/s   {:.0f} s left   KE {:.3g} J   ",
+             p.time, p.end, p.steps_per_s, left, p.kinetic_energy);
   if (p.time >= p.end) fmt::print(stderr, "\n");
   std::fflush(stderr);
 }

@@ -97,7 +97,9 @@ RunStats RunLoop::advance(double until, std::int64_t steps) {
     if (clock_.due(last)) {
       for (auto* o : observers_) o->on_progress();
       sim_.outputs().on_progress();
-      if (progress) progress({sim_.time(), end_time_, clock_.rate(sim_.steps()), sim_.time_step()});
+      if (progress)
+        progress({sim_.time(), end_time_, clock_.rate(sim_.steps()), sim_.time_step(),
+                  sim_.kinetic_energy()});
     }
   }
   done_here.steps = sim_.steps() - first;

@@ -19,7 +19,7 @@ struct RunStats {
 };
 
 struct Progress {
-  double time, end, steps_per_s, time_step;
+  double time, end, steps_per_s, time_step, kinetic_energy;
 };
 
 class RunLoop {

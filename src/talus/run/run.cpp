@@ -138,10 +138,12 @@ RunResult execute(const RunRequest& req) {
   log.ended(fmt::format("completed: {} steps to t = {:.6g} s in {:.1f} s of wall time",
                         summary.steps, summary.simulated_time, summary.loop_seconds));
   result.stats = loop.stats();
+  if (!summary.report.headline.empty()) result.headline.push_back(summary.report.headline);
   for (auto& e : experiments) {
     const auto line = e->headline(summary.experiments[e->name()]);
     if (!line.empty()) result.headline.push_back(line);
   }
+  for (const auto& text : result.headline) log.headline(text);
   return result;
 }
 

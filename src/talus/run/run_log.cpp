@@ -11,27 +11,32 @@ namespace talus::run {
 RunLog::RunLog(const std::filesystem::path& out, double interval_seconds, bool echo)
     : file_(out / "log.txt", std::ios::app), interval_(interval_seconds), echo_(echo) {}
 
-void RunLog::line(const std::string& text) {
+void RunLog::line(const std::string& text, bool echo) {
   const std::time_t now = std::time(nullptr);
   const std::string stamped = fmt::format("{:%Y-%m-%d %H:%M:%S} {}", fmt::localtime(now), text);
   file_ << stamped << '\n' << std::flush;
-  if (echo_) {
+  if (echo) {
     fmt::print(stderr, "talus: {}\n", stamped);
     std::fflush(stderr);
   }
 }
 
-void RunLog::started(const std::string& what) { line(what); }
+void RunLog::started(const std::string& what) { line(what, echo_); }
 
 void RunLog::progress(const Progress& p) {
   const double now = clock_.elapsed();
   if (now - last_ < interval_ || p.time >= p.end) return;
   last_ = now;
   const double left = p.steps_per_s > 0 ? (p.end - p.time) / p.time_step / p.steps_per_s : 0.0;
-  line(fmt::format("t = {:.6g} / {:.6g} s, {:.0f} steps/s, dt = {:.3g} s, about {:.0f} s left",
-                   p.time, p.end, p.steps_per_s, p.time_step, left));
+  line(fmt::format(
+           "t = {:.6g} / {:.6g} s, {:.0f} steps/s, dt = {:.3g} s, about {:.0f} s left, kinetic "
+           "energy {:.4g} J",
+           p.time, p.end, p.steps_per_s, p.time_step, left, p.kinetic_energy),
+       echo_);
 }
 
-void RunLog::ended(const std::string& what) { line(what); }
+void RunLog::ended(const std::string& what) { line(what, echo_); }
+
+void RunLog::headline(const std::string& text) { line(text, false); }
 
 }  // namespace talus::run

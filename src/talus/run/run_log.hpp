@@ -1,9 +1,9 @@
 #pragma once
 // The run's log.txt (and, for batch jobs whose stderr is not a terminal, the
 // same lines on stderr): when and what started, a progress line every
-// `interval` wall seconds (simulated time, steps per second, time left), and
-// how the run ended. LIGGGHTS' thermo output plays this part for its users;
-// without it a batch log shows nothing for minutes.
+// `interval` wall seconds (simulated time, steps per second, time left,
+// kinetic energy), how the run ended and its headline. LIGGGHTS' thermo output plays this part for
+// its users; without it a batch log shows nothing for minutes.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -24,9 +24,12 @@ class RunLog {
   // a line when `interval` seconds have passed since the last one.
   void progress(const Progress& p);
   void ended(const std::string& what);
+  // The run's key results, after `ended`: into log.txt only (the command
+  // line prints them on stderr itself).
+  void headline(const std::string& text);
 
  private:
-  void line(const std::string& text);
+  void line(const std::string& text, bool echo);
 
   std::ofstream file_;
   double interval_;

@@ -27,8 +27,10 @@ struct MethodReport {
   nlohmann::json scenario;  // the resolved scenario
   nlohmann::json resolved;  // what the method chose (time step, grid, threads)
   nlohmann::json metrics;   // the headline results
-  std::string rate_key;     // "particle_steps_per_s", ...
-  double items = 0.0;       // particles, points, blocks or cells advanced per step
+  // One line of the key results, printed when the run ends (stderr and log.txt).
+  std::string headline;
+  std::string rate_key;  // "particle_steps_per_s", ...
+  double items = 0.0;    // particles, points, blocks or cells advanced per step
   nlohmann::json run_extra = nlohmann::json::object();  // more counts for "run"
 };
 
@@ -45,6 +47,8 @@ class Simulation {
   virtual double tolerance() const { return 1e-9 * std::max(1.0, end_time()); }
   // The current (or last) time step, for progress estimates.
   virtual double time_step() const = 0;
+  // Kinetic energy of what moves now (J; J/m in 2D), for the progress lines.
+  virtual double kinetic_energy() const = 0;
   virtual Schedules schedules() const = 0;
 
   // Before the first step: `fresh` starts a new run, otherwise the state was

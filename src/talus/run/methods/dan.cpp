@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "talus/run/loop.hpp"
@@ -114,6 +115,17 @@ MethodReport DanSimulation::report() const {
                  {"max_speed_m_s", r.max_speed},
                  {"max_depth_m", r.max_depth},
                  {"kinetic_energy_J", model.kinetic_energy()}};
+  // "dan: front at s = 12.3 m, tail at s = 4.1 m; max speed 3.2 m/s, max depth
+  // 0.21 m; run-up 0.8 m on the barrier; at rest at t = 6.1 s".
+  rep.headline = fmt::format("dan: front at s = {:.4g} m", model.blocks().s.back());
+  if (std::isfinite(r.tail_s)) rep.headline += fmt::format(", tail at s = {:.4g} m", r.tail_s);
+  rep.headline +=
+      fmt::format("; max speed {:.3g} m/s, max depth {:.3g} m", r.max_speed, r.max_depth);
+  if (std::isfinite(r.runup_max.distance_on_barrier))
+    rep.headline += fmt::format("; run-up {:.3g} m along the barrier (to y = {:.4g} m)",
+                                r.runup_max.distance_on_barrier, r.runup_max.elevation);
+  rep.headline += std::isfinite(r.rest_time) ? fmt::format("; at rest at t = {:.4g} s", r.rest_time)
+                                             : std::string("; still moving at the end");
   return rep;
 }
 

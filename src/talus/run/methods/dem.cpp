@@ -158,7 +158,35 @@ MethodReport DemSimulation<D>::report() const {
                {"contacts_per_particle", p.size() ? 2.0 * s.pair_contacts / p.size() : 0.0},
                {"walls", walls}};
   r.run_extra = {{"neighbour_builds", s.neighbours.builds}};
+  r.headline = headline();
   return r;
+}
+
+template <int D>
+double DemSimulation<D>::kinetic_energy() const {
+  return dem::kinetic_energy(run_.system.particles);
+}
+
+// "dem: 1160 particles, front at x = 0.31 m, top at 0.057 m; peak kinetic
+// energy 0.84 J at t = 0.25 s; largest wall force 69 N on 'back'".
+template <int D>
+std::string DemSimulation<D>::headline() const {
+  const auto& s = run_.system;
+  const auto& p = s.particles;
+  std::string line = fmt::format("dem: {} particles", p.size());
+  if (s.removed > 0) line += fmt::format(" ({} left the domain)", s.removed);
+  if (p.size() > 0)
+    line += fmt::format(", front at x = {:.4g} m, top at {:.4g} m", dem::front_x(p), dem::top(p));
+  if (!files_) return line;
+  line += fmt::format("; peak kinetic energy {:.4g} J at t = {:.4g} s", files_->peak_kinetic_energy,
+                      files_->peak_kinetic_energy_time);
+  std::size_t largest = 0;
+  for (std::size_t w = 0; w < s.walls.size(); ++w)
+    if (files_->peak_wall_force[w] > files_->peak_wall_force[largest]) largest = w;
+  if (!s.walls.empty() && files_->peak_wall_force[largest] > 0.0)
+    line += fmt::format("; largest wall force {:.4g} N on '{}'", files_->peak_wall_force[largest],
+                        s.walls[largest].name);
+  return line;
 }
 
 template class DemSimulation<2>;

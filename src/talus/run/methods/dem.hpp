@@ -40,6 +40,9 @@ class DemSimulation : public Simulation {
   std::int64_t steps() const override { return run_.system.step; }
   double end_time() const override { return static_cast<double>(end_step_) * run_.system.dt; }
   double time_step() const override { return run_.system.dt; }
+  double kinetic_energy() const override;
+  // The report's one line of key results.
+  std::string headline() const;
   Schedules schedules() const override;
   void start(bool fresh) override;
   void advance(double target, double tolerance, std::int64_t max_steps) override;

@@ -24,6 +24,9 @@ class MpmSimulation : public Simulation {
   // The old loop's rule: the run ends within 1e-12 of its duration.
   double tolerance() const override { return 1e-12 * scenario_.duration; }
   double time_step() const override { return solver_.last_dt > 0 ? solver_.last_dt : 1.0; }
+  double kinetic_energy() const override;
+  // The report's one line of key results (from the report's metrics).
+  static std::string headline(const nlohmann::json& metrics);
   Schedules schedules() const override;
   void start(bool fresh) override;
   void advance(double target, double tolerance, std::int64_t max_steps) override;

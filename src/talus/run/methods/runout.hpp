@@ -27,6 +27,7 @@ class DanSimulation : public Simulation {
   std::int64_t steps() const override { return steps_; }
   double end_time() const override { return scenario_.control.duration; }
   double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-4; }
+  double kinetic_energy() const override { return setup_.model.kinetic_energy(); }
   Schedules schedules() const override;
   void start(bool fresh) override;
   void advance(double target, double tolerance, std::int64_t max_steps) override;
@@ -59,6 +60,7 @@ class Fv2dSimulation : public Simulation {
   std::int64_t steps() const override { return steps_; }
   double end_time() const override { return scenario_.control.duration; }
   double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-2; }
+  double kinetic_energy() const override { return solver_.kinetic_energy(); }
   Schedules schedules() const override;
   void start(bool fresh) override;
   // Steps land on `target`, so the series is sampled at its times exactly.
