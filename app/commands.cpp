@@ -47,6 +47,7 @@ int run_command(const RunOptions& opt) {
   if (!opt.backend.empty()) req.sets.push_back("run.backend=\"" + opt.backend + "\"");
   req.threads = opt.threads;
   req.force = opt.force;
+  req.allow_long_run = opt.allow_long_run;
   // A terminal gets a progress line that rewrites itself; a batch job's log
   // gets log.txt's lines.
   const bool terminal = isatty(STDERR_FILENO);
@@ -69,7 +70,7 @@ int validate_command(const ValidateOptions& opt) {
   const std::string file = resolve_scenario(opt.file);
   auto sets = opt.sets;
   if (!opt.backend.empty()) sets.push_back("run.backend=\"" + opt.backend + "\"");
-  fmt::print("{}: {}\n", file, run::validate(file, sets));
+  fmt::print("{}: {}\n", file, run::validate(file, sets, opt.allow_long_run));
   return 0;
 }
 

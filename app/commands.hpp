@@ -10,12 +10,14 @@ struct RunOptions {
   std::vector<std::string> sets;
   int threads = 1;
   bool force = false, quiet = false;
+  bool allow_long_run = false;
   double log_seconds = 10.0;
 };
 struct ValidateOptions {
   std::string file;
   std::string backend;
   std::vector<std::string> sets;
+  bool allow_long_run = false;
 };
 
 int run_command(const RunOptions& options);

@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"cpu", "gpu"}));
   run_cmd->add_flag("--force", run.force, "write into an existing output folder");
   run_cmd->add_flag("--quiet,-q", run.quiet, "no progress on stderr");
+  run_cmd->add_flag("--allow-long-run", run.allow_long_run,
+                    "run even when the run is estimated above 10^9 steps");
   run_cmd
       ->add_option("--log-interval", run.log_seconds,
                    "wall seconds between progress lines in log.txt (and on stderr when it is not "
@@ -47,6 +49,8 @@ int main(int argc, char** argv) {
   val_cmd->add_option("--set", val.sets, "override a scenario value: key=value");
   val_cmd->add_option("--backend", val.backend, "cpu or gpu (sets run.backend)")
       ->check(CLI::IsMember({"cpu", "gpu"}));
+  val_cmd->add_flag("--allow-long-run", val.allow_long_run,
+                    "accept a run estimated above 10^9 steps");
 
   auto* list_cmd = cli.add_subcommand("list", "list the bundled scenarios");
   CompareOptions cmp;

@@ -42,5 +42,34 @@ refused "an MPM step above the stable one" \
 check "... saying what would do" 'grep -q "use time_step = \"auto\"" "$tmp/out"'
 "$talus" run "$tmp/mpm_step.toml" --out "$tmp/mpm_run" --quiet >"$tmp/out" 2>&1; rc=$?
 check "talus run refuses it too (exit 2)" '[ $rc -eq 2 ] && grep -q "above the stable step" "$tmp/out"'
+check "... and leaves no run folder behind" '[ ! -e "$tmp/mpm_run" ]'
+
+# Runs that would never finish (issue 28 §4): a density of 1e-300 makes the
+# MPM step 3e-156 s; a duration of 1e5 s makes 9e9 DEM steps.
+refused "MPM density 1e-300" "about 3.12e+155 steps" "$src/scenarios/mpm_column_collapse.toml" \
+  --set materials.0.density=1e-300
+check "... and names the override" 'grep -q -- "--allow-long-run" "$tmp/out"'
+timeout 20 "$talus" validate "$src/scenarios/mpm_column_collapse.toml" \
+  --set materials.0.density=1e-300 --allow-long-run >"$tmp/out" 2>&1; rc=$?
+check "--allow-long-run lets it pass validate" '[ $rc -eq 0 ] && grep -q "about 3.116e+155 steps" "$tmp/out"'
+"$talus" run "$src/scenarios/collapse_2d.toml" --set run.duration=1e5 --out "$tmp/long" \
+  --quiet >"$tmp/out" 2>&1; rc=$?
+check "a 9e9-step DEM run is refused by talus run (exit 2)" '[ $rc -eq 2 ] && grep -q "about 9.06e+09 steps" "$tmp/out"'
+check "... leaving no run folder behind" '[ ! -e "$tmp/long" ]'
+
+# A packing that cannot reach the porosity asked for is an input error.
+refused "porosity 0.01 in a random fill" "[[particles]] #0: packing: porosity 0.0100 is not reachable" \
+  "$src/scenarios/collapse_2d.toml" --set particles.0.porosity=0.01
+
+# Sizes that would exhaust memory are refused with the estimate, before anything
+# is allocated (they ended in std::bad_alloc).
+refused "MPM cell_size 1e-9" "[grid] cell_size = 1e-09 m: 9.1e+17 grid nodes" \
+  "$src/scenarios/mpm_column_collapse.toml" --set grid.cell_size=1e-9
+check "... with the memory it would need" 'grep -q "GiB of memory, more than the" "$tmp/out"'
+refused "membrane spacing 1e-6" "[[membranes]] 'sheet' at spacing = 1e-06 m: 1.15e+10 vertices" \
+  "$src/scenarios/membrane_sheet_drop.toml" --set membranes.0.spacing=1e-6
+TALUS_MEMORY_LIMIT=0.001 timeout 20 "$talus" validate "$src/scenarios/mpm_column_collapse.toml" \
+  >"$tmp/out" 2>&1; rc=$?
+check "a limit the user sets (TALUS_MEMORY_LIMIT) is kept" '[ $rc -eq 2 ] && grep -q "of TALUS_MEMORY_LIMIT" "$tmp/out"'
 
 finish "input refusals"

@@ -167,9 +167,9 @@ TEST(Packing, RandomFill3dBox) {
   EXPECT_LT(overlap_stats(box, particles).max_overlap, 1e-3 * kRmin);
 }
 
-TEST(Packing, UnreachablePorosityFails) {
+TEST(Packing, UnreachablePorosityIsAnInputError) {
   // Solid fraction 0.9 is beyond random jamming of disks (about 0.84).
-  EXPECT_THROW(random_fill(box_2d(0.05, 0.05), kRmin, kRmax, 0.10, std::nullopt, 1), RunError);
+  EXPECT_THROW(random_fill(box_2d(0.05, 0.05), kRmin, kRmax, 0.10, std::nullopt, 1), InputError);
 }
 
 TEST(Packing, BadInputIsRejected) {

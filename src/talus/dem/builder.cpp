@@ -106,13 +106,18 @@ std::vector<Placed> place_particles(const DemScenario& sc, unsigned seed) {
         from_file(s, mat, out);
         break;
       case SourceKind::RandomFill:
-        packed = random_fill(region_of(s, dim), s.radius_min, s.radius_max, s.porosity, s.count,
-                             seed + index);
-        break;
       case SourceKind::Grow:
-        packed = grow_packing(region_of(s, dim), s.radius_min, s.radius_max, s.packing_fraction,
-                              s.count.value_or(1000), seed + index)
-                     .particles;
+        try {
+          packed = s.kind == SourceKind::RandomFill
+                       ? random_fill(region_of(s, dim), s.radius_min, s.radius_max, s.porosity,
+                                     s.count, seed + index)
+                       : grow_packing(region_of(s, dim), s.radius_min, s.radius_max,
+                                      s.packing_fraction, s.count.value_or(1000), seed + index)
+                             .particles;
+        } catch (const InputError& e) {
+          // Name the source: the packing knows only its region and numbers.
+          throw InputError(where + ": " + e.what());
+        }
         break;
     }
     if (s.shrink > 0.0) shrink_radii(packed, s.shrink);

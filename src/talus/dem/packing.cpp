@@ -481,7 +481,10 @@ std::vector<Vec<D>> place_without_overlap(const Walls<D>& walls, const std::vect
       });
       if (placed) x[i] = p, grid.insert(i, p);
     }
-    if (!placed) throw RunError("packing: no room to place the particles at reduced size");
+    if (!placed)
+      throw InputError(
+          "packing: no room to place the particles even at reduced size: the region is too "
+          "small for this count and these radii");
   }
   return x;
 }
@@ -562,9 +565,9 @@ std::vector<PackedParticle> fill(const Region& region, double r_min, double r_ma
   std::vector<PackedParticle> out = problem.to_metres(relaxer.x, relaxer.r);
   const OverlapStats stats = overlap_stats(region, out);
   if (stats.mean_overlap > 0.005 * r_min)
-    throw RunError(fmt::format(
+    throw InputError(fmt::format(
         "packing: porosity {:.4f} is not reachable with radii {}..{} (jammed: mean overlap "
-        "{:.2f} % of r_min after relaxation)",
+        "{:.2f} % of r_min after relaxation); ask for a larger porosity or fewer particles",
         1 - phi, r_min, r_max, 100 * stats.mean_overlap / r_min));
   return out;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "talus/core/error.hpp"
+#include "talus/core/memory_limit.hpp"
 #include "talus/mpm/flume.hpp"
 #include "talus/mpm/scenario.hpp"
 
@@ -120,9 +121,33 @@ double resolved_k0(const BodyParams& body, const MaterialParams& m) {
   return m.model == NewtonianFluid::name ? 1.0 : m.poisson_ratio / (1.0 - m.poisson_ratio);
 }
 
+// The grid nodes and body points a scenario asks for, checked against the
+// memory there is before anything is allocated (core/memory_limit.hpp).
+template <int D>
+void check_memory_need(const MpmScenario& sc) {
+  const double h = sc.grid.cell_size;
+  double nodes = 1.0;
+  for (int d = 0; d < D; ++d) nodes *= std::ceil((sc.grid.hi[d] - sc.grid.lo[d]) / h) + 1.0;
+  double points = 0.0;
+  for (const auto& b : sc.bodies) {
+    double n = 1.0;
+    for (int d = 0; d < D; ++d) n *= std::max(1.0, (b.max[d] - b.min[d]) * b.per_cell / h);
+    points += n;
+  }
+  // Per node: the mass and four vector fields of grid.hpp, twice for the
+  // solver's scratch; per point: position, velocity, two D x D gradients,
+  // stress and state (particles.hpp).
+  const double node_bytes = 16.0 * (1 + 4 * D), point_bytes = 8.0 * (4 * D + 2 * D * D + 16);
+  check_memory(nodes * node_bytes + points * point_bytes,
+               fmt::format("[grid] cell_size = {:.3g} m: {:.3g} grid nodes and {:.3g} material "
+                           "points",
+                           h, nodes, points));
+}
+
 template <int D>
 Solver<D> build_mpm(const MpmScenario& sc) {
   using Vec = typename Space<D>::Vec;
+  check_memory_need<D>(sc);
   std::array<BoundaryKind, 2 * D> faces;
   for (int f = 0; f < 2 * D; ++f) faces[f] = sc.grid.faces[f];
   Grid<D> grid(Space<D>::from3(sc.grid.lo), Space<D>::from3(sc.grid.hi), sc.grid.cell_size, faces);

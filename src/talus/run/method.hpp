@@ -5,6 +5,7 @@
 // run/methods/registry.cpp with one line.
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,14 +24,22 @@ struct RunContext {
   std::function<void()> prepare = [] {};
 };
 
+// What `talus validate` learns of a scenario: the description it prints, and
+// the number of steps the run would take (NaN where the method cannot tell
+// before running: adaptive steps that depend on the flow).
+struct Validation {
+  std::string description;
+  double steps = std::numeric_limits<double>::quiet_NaN();
+  double duration = 0.0;  // simulated seconds, for the message of a refusal
+};
+
 struct Method {
   std::string name;  // "dem", "mpm", "dan", "fv2d"
   // True when this method runs the file: its `method` key, and `run.model`
   // where several methods share one ("runout").
   std::function<bool(const io::ScenarioFile&)> accepts;
-  // Parses and builds without running; returns what `talus validate` prints
-  // after the file name. Throws InputError.
-  std::function<std::string(const io::ScenarioFile&)> validate;
+  // Parses and builds without running. Throws InputError.
+  std::function<Validation(const io::ScenarioFile&)> validate;
   // A fresh run writes the resolved scenario (scenario.toml) into ctx.out and
   // builds; a resumed one builds from it and restores checkpoint.bin.
   std::function<std::unique_ptr<Simulation>(const io::ScenarioFile&, const RunContext&)> create;

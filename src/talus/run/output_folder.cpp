@@ -143,6 +143,7 @@ OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
                      ": output folder exists and is not empty; use --force to overwrite it or "
                      "--out to choose another");
   if (full) check_own_folder(out, read_record(out));
+  const bool existed = fs::exists(out);
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec)
@@ -150,6 +151,7 @@ OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
         fmt::format("{}: cannot create the output folder ({}); choose another with --out",
                     out.string(), ec.message()));
   OutputFolder folder(out, lock(out));
+  folder.created_ = !existed;
   // Read again under the lock: the run that wrote it may have finished since.
   if (full) {
     const Record record = read_record(out);
@@ -184,7 +186,8 @@ OutputFolder::OutputFolder(OutputFolder&& other) noexcept
     : path_(std::move(other.path_)),
       lock_(other.lock_),
       recording_(other.recording_),
-      scenario_(std::move(other.scenario_)) {
+      scenario_(std::move(other.scenario_)),
+      created_(other.created_) {
   other.lock_ = -1;
 }
 
@@ -195,12 +198,24 @@ OutputFolder& OutputFolder::operator=(OutputFolder&& other) noexcept {
     lock_ = other.lock_;
     recording_ = other.recording_;
     scenario_ = std::move(other.scenario_);
+    created_ = other.created_;
     other.lock_ = -1;
   }
   return *this;
 }
 
 OutputFolder::~OutputFolder() { release(); }
+
+void OutputFolder::discard() noexcept {
+  if (lock_ < 0) return;
+  // Everything here is this run's: claim() found the folder empty of other
+  // files or emptied it of a finished run's.
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(path_, ec)) fs::remove_all(e.path(), ec);
+  recording_ = false;
+  release();
+  if (created_) fs::remove(path_, ec);
+}
 
 void OutputFolder::release() noexcept {
   if (lock_ < 0) return;

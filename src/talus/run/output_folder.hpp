@@ -26,6 +26,10 @@ class OutputFolder {
   static OutputFolder reopen(const std::filesystem::path& out);
   // Records the checksum of the scenario.toml the run just wrote.
   void scenario_written();
+  // The run was refused before it started (bad input found while building):
+  // removes what it wrote, and the folder itself when claim() created it, so
+  // that the refusal leaves nothing behind.
+  void discard() noexcept;
 
   OutputFolder(OutputFolder&& other) noexcept;
   OutputFolder& operator=(OutputFolder&& other) noexcept;
@@ -46,6 +50,7 @@ class OutputFolder {
   // found empty or emptied, never for a claim that was refused.
   bool recording_ = false;
   std::string scenario_ = "-";  // checksum of scenario.toml, "-" before it is written
+  bool created_ = false;        // claim() made the folder
 };
 
 // A run name becomes the folder runs/<name>: it must be a plain name (letters,

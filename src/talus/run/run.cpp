@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "talus/run/experiment.hpp"
 #include "talus/run/method.hpp"
 #include "talus/run/run_log.hpp"
+#include "talus/run/step_limit.hpp"
 #include "talus/run/summary.hpp"
 #include "talus/scenario/compare_file.hpp"
 #include "talus/scenario/scenario.hpp"
@@ -61,6 +63,11 @@ void check_resumable(const RunRequest& req) {
   }
 }
 
+// "20000", or "3.116e+155" when too large to read as a whole number.
+std::string step_count(double steps) {
+  return steps < 1e12 ? fmt::format("{:.0f}", std::ceil(steps)) : fmt::format("{:.4g}", steps);
+}
+
 io::ScenarioFile load(const RunRequest& req, fs::path& out) {
   if (!req.resume.empty()) {
     out = req.resume;
@@ -95,16 +102,27 @@ RunResult execute(const RunRequest& req) {
     folder.emplace(OutputFolder::reopen(out));
   else
     ctx.prepare = [&] { folder.emplace(OutputFolder::claim(out, req.force)); };
-  auto sim = method.create(file, ctx);
+  std::unique_ptr<Simulation> sim;
+  try {
+    sim = method.create(file, ctx);
+    check_step_count(file.path, sim->estimated_steps(), sim->end_time() - sim->time(),
+                     req.allow_long_run);
+  } catch (const InputError&) {
+    // Refused while building: a fresh run's folder goes again.
+    if (!resume && folder) folder->discard();
+    throw;
+  }
   if (!resume && folder) folder->scenario_written();
   auto experiments = attach_experiments(*sim, ctx);
   std::vector<Observer*> observers;
   for (auto& e : experiments) observers.push_back(e.get());
   RunLoop loop(*sim, observers);
   RunLog log(out, req.log_seconds, req.log_to_stderr);
-  log.started(fmt::format("talus {} {} {} ({}, {} thread{})", version(),
+  const double steps = sim->estimated_steps();
+  log.started(fmt::format("talus {} {} {} ({}, {} thread{}{})", version(),
                           resume ? "resumed" : "started", file.path, method.name, req.threads,
-                          req.threads == 1 ? "" : "s"));
+                          req.threads == 1 ? "" : "s",
+                          steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
   loop.progress_seconds = std::min(loop.progress_seconds, req.log_seconds);
   loop.progress = [&](const Progress& p) {
     log.progress(p);
@@ -147,16 +165,20 @@ RunResult execute(const RunRequest& req) {
   return result;
 }
 
-std::string validate(const std::string& path, const std::vector<std::string>& sets) {
+std::string validate(const std::string& path, const std::vector<std::string>& sets,
+                     bool allow_long_run) {
   const auto file = io::load_scenario_file(path, sets);
   if (file.table.contains("name"))
     check_run_name(file.table["name"].value_or(std::string()), where_name(file));
   if (file.method == "compare") {
     const auto c = io::read_compare_file(path);
-    for (const auto& [name, method_file] : c.methods) validate(method_file, {});
+    for (const auto& [name, method_file] : c.methods) validate(method_file, {}, allow_long_run);
     return fmt::format("valid comparison of {} methods", c.methods.size());
   }
-  return "valid (" + method_for(file).validate(file) + ")";
+  const Validation v = method_for(file).validate(file);
+  check_step_count(file.path, v.steps, v.duration, allow_long_run);
+  return "valid (" + v.description +
+         (v.steps >= 0.0 ? ", about " + step_count(v.steps) + " steps" : std::string()) + ")";
 }
 
 }  // namespace talus::run

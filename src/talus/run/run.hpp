@@ -20,8 +20,9 @@ struct RunRequest {
   int threads = 1;
   bool force = false;  // empty an existing output folder
   std::function<void(const Progress&)> progress;
-  double log_seconds = 10.0;   // wall seconds between progress lines in log.txt
-  bool log_to_stderr = false;  // also write log.txt's lines to stderr (batch jobs)
+  double log_seconds = 10.0;    // wall seconds between progress lines in log.txt
+  bool log_to_stderr = false;   // also write log.txt's lines to stderr (batch jobs)
+  bool allow_long_run = false;  // run even when estimated above 10^9 steps (step_limit.hpp)
 };
 
 struct RunResult {
@@ -35,6 +36,8 @@ struct RunResult {
 RunResult execute(const RunRequest& request);
 
 // Parses and builds a scenario without running: the one-line description.
-std::string validate(const std::string& file, const std::vector<std::string>& sets);
+// Refuses (InputError) a run estimated above 10^9 steps unless `allow_long_run`.
+std::string validate(const std::string& file, const std::vector<std::string>& sets,
+                     bool allow_long_run = false);
 
 }  // namespace talus::run

@@ -49,6 +49,8 @@ class Simulation {
   virtual double time_step() const = 0;
   // Kinetic energy of what moves now (J; J/m in 2D), for the progress lines.
   virtual double kinetic_energy() const = 0;
+  // Steps still to take (NaN when the method cannot tell: adaptive steps).
+  virtual double estimated_steps() const = 0;
   virtual Schedules schedules() const = 0;
 
   // Before the first step: `fresh` starts a new run, otherwise the state was

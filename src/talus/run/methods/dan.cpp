@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/methods.hpp"
@@ -81,6 +82,11 @@ void DanSimulation::finish() {
   if (files_) files_->write_results(tracker_.results());
 }
 
+double DanSimulation::estimated_steps() const {
+  const double dt = scenario_.control.time_step;
+  return dt > 0 ? (end_time() - time()) / dt : std::numeric_limits<double>::quiet_NaN();
+}
+
 MethodReport DanSimulation::report() const {
   using nlohmann::json;
   const auto& model = setup_.model;
@@ -147,8 +153,11 @@ Method dan_method() {
   m.validate = [](const io::ScenarioFile& f) {
     const auto sc = io::parse_runout_scenario(f);
     const auto setup = runout::build_dan(sc);
-    return fmt::format("1D DAN runout, {} boundary blocks, {:.4g} m^3 released", setup.model.size(),
-                       setup.model.total_mass() / sc.params.density);
+    Validation v{fmt::format("1D DAN runout, {} boundary blocks, {:.4g} m^3 released",
+                             setup.model.size(), setup.model.total_mass() / sc.params.density)};
+    const double dt = sc.control.time_step;
+    if (dt > 0) v.steps = sc.control.duration / dt, v.duration = sc.control.duration;
+    return v;
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) -> std::unique_ptr<Simulation> {
     const auto sc = io::parse_runout_scenario(f);

@@ -216,13 +216,15 @@ std::unique_ptr<Simulation> create_dem(const dem::DemScenario& sc, const RunCont
 }
 
 template <int D>
-std::string validate_dem(const dem::DemScenario& sc) {
+Validation validate_dem(const dem::DemScenario& sc) {
   check_backend(sc);
   // Building places the particles and checks the time step, without settling.
   auto run = dem::build_dem<D>(sc, {1, false});
-  return fmt::format("{}D DEM, {} particles, {} walls, time step {:.3g} s, critical {:.3g} s", D,
-                     run->system.particles.size(), sc.walls.size(), run->system.dt,
-                     run->system.critical_time_step);
+  const double dt = run->system.dt;
+  return {fmt::format("{}D DEM, {} particles, {} walls, time step {:.3g} s, critical {:.3g} s", D,
+                      run->system.particles.size(), sc.walls.size(), dt,
+                      run->system.critical_time_step),
+          sc.run.duration / dt, sc.run.duration};
 }
 
 }  // namespace

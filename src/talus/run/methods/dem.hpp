@@ -2,6 +2,7 @@
 // The DEM method on the run loop: steps a DemRun in chunks of whole steps,
 // checks its health, applies a scheduled friction change, and writes its
 // files through DemOutputs. Tests and experiments use DemSimulation directly.
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -38,9 +39,15 @@ class DemSimulation : public Simulation {
 
   double time() const override { return run_.system.time; }
   std::int64_t steps() const override { return run_.system.step; }
-  double end_time() const override { return static_cast<double>(end_step_) * run_.system.dt; }
+  // The last step's time (the same number as end_step_ * dt, known before start()).
+  double end_time() const override {
+    return std::round(control_.duration / run_.system.dt) * run_.system.dt;
+  }
   double time_step() const override { return run_.system.dt; }
   double kinetic_energy() const override;
+  double estimated_steps() const override {
+    return control_.duration / run_.system.dt - static_cast<double>(run_.system.step);
+  }
   // The report's one line of key results.
   std::string headline() const;
   Schedules schedules() const override;

@@ -55,6 +55,11 @@ void Fv2dSimulation::finish() {
   if (files_) files_->write_results(solver_, maxima_);
 }
 
+double Fv2dSimulation::estimated_steps() const {
+  const double dt = std::min(solver_.stable_time_step(), scenario_.grid.max_time_step);
+  return (end_time() - time()) / dt;
+}
+
 MethodReport Fv2dSimulation::report() const {
   using nlohmann::json;
   const auto& g = scenario_.grid.shape;
@@ -113,8 +118,11 @@ Method fv2d_method() {
   m.validate = [](const io::ScenarioFile& f) {
     const auto sc = io::parse_runout_scenario(f);
     const auto solver = runout::build_fv2d(sc);
-    return fmt::format("2D runout on a {} x {} grid of {} m cells, {:.4g} m^3 released",
-                       sc.grid.shape.nx, sc.grid.shape.ny, sc.grid.shape.dx, solver.volume());
+    const double dt = std::min(solver.stable_time_step(), sc.grid.max_time_step);
+    return Validation{
+        fmt::format("2D runout on a {} x {} grid of {} m cells, {:.4g} m^3 released",
+                    sc.grid.shape.nx, sc.grid.shape.ny, sc.grid.shape.dx, solver.volume()),
+        sc.control.duration / dt, sc.control.duration};
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) -> std::unique_ptr<Simulation> {
     const auto sc = io::parse_runout_scenario(f);

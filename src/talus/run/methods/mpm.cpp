@@ -238,12 +238,14 @@ std::unique_ptr<Simulation> create_mpm(mpm::MpmScenario sc, const RunContext& ct
 }
 
 template <int D>
-std::string validate_mpm(const mpm::MpmScenario& sc, const std::string& where) {
+Validation validate_mpm(const mpm::MpmScenario& sc, const std::string& where) {
   const auto s = mpm::build_mpm<D>(sc);
   check_fixed_step(s, where);
-  return fmt::format("{}D MPM, {} points, {} material{}, first time step {:.3g} s", D,
-                     s.particles.size(), sc.materials.size(), sc.materials.size() == 1 ? "" : "s",
-                     s.time_step());
+  const double dt = s.time_step();
+  return {
+      fmt::format("{}D MPM, {} points, {} material{}, first time step {:.3g} s", D,
+                  s.particles.size(), sc.materials.size(), sc.materials.size() == 1 ? "" : "s", dt),
+      sc.duration / dt, sc.duration};
 }
 
 }  // namespace

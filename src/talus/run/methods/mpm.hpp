@@ -25,6 +25,10 @@ class MpmSimulation : public Simulation {
   double tolerance() const override { return 1e-12 * scenario_.duration; }
   double time_step() const override { return solver_.last_dt > 0 ? solver_.last_dt : 1.0; }
   double kinetic_energy() const override;
+  // From the CFL step of the current state (the steps adapt as the flow goes).
+  double estimated_steps() const override {
+    return (end_time() - solver_.time) / solver_.time_step();
+  }
   // The report's one line of key results (from the report's metrics).
   static std::string headline(const nlohmann::json& metrics);
   Schedules schedules() const override;

@@ -28,6 +28,8 @@ class DanSimulation : public Simulation {
   double end_time() const override { return scenario_.control.duration; }
   double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-4; }
   double kinetic_energy() const override { return setup_.model.kinetic_energy(); }
+  // Known for a fixed time step only (the automatic one follows the flow).
+  double estimated_steps() const override;
   Schedules schedules() const override;
   void start(bool fresh) override;
   void advance(double target, double tolerance, std::int64_t max_steps) override;
@@ -61,6 +63,8 @@ class Fv2dSimulation : public Simulation {
   double end_time() const override { return scenario_.control.duration; }
   double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-2; }
   double kinetic_energy() const override { return solver_.kinetic_energy(); }
+  // From the stable step of the current state (steps shrink as the flow speeds up).
+  double estimated_steps() const override;
   Schedules schedules() const override;
   void start(bool fresh) override;
   // Steps land on `target`, so the series is sampled at its times exactly.
