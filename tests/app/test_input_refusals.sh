@@ -61,6 +61,10 @@ check "... leaving no run folder behind" '[ ! -e "$tmp/long" ]'
 refused "porosity 0.01 in a random fill" "[[particles]] #0: packing: porosity 0.0100 is not reachable" \
   "$src/scenarios/collapse_2d.toml" --set particles.0.porosity=0.01
 
+# A fixed DAN step above the stable one at the start (3.9 ms here) is refused.
+refused "DAN time_step 1 s" "[run] 'time_step': 1 s is above the stable step 0.00386 s" \
+  "$src/scenarios/runout_flume_A.toml" --set run.time_step=1
+
 # Sizes that would exhaust memory are refused with the estimate, before anything
 # is allocated (they ended in std::bad_alloc).
 refused "MPM cell_size 1e-9" "[grid] cell_size = 1e-09 m: 9.1e+17 grid nodes" \

@@ -3,6 +3,8 @@
 // files it runs, how it validates one and how it builds a running Simulation.
 // A new method lives in run/methods/<name>.cpp and is added to the list in
 // run/methods/registry.cpp with one line.
+#include <fmt/core.h>
+
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -45,6 +47,16 @@ struct Method {
   std::function<std::unique_ptr<Simulation>(const io::ScenarioFile&, const RunContext&)> create;
   bool checkpoints = true;  // whether a run can be resumed
 };
+
+// "file:line: [table] 'key'" (without the line when the key is not in the
+// file), for messages about a key the methods check after parsing.
+inline std::string where_key(const io::ScenarioFile& f, const std::string& table,
+                             const std::string& key) {
+  const auto* node = f.table[table][key].node();
+  const int line = node ? static_cast<int>(node->source().begin.line) : 0;
+  return line > 0 ? fmt::format("{}:{}: [{}] '{}'", f.path, line, table, key)
+                  : fmt::format("{}: [{}] '{}'", f.path, table, key);
+}
 
 // Every registered method, in registration order.
 const std::vector<Method>& methods();

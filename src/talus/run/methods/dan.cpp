@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 
+#include "talus/core/error.hpp"
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/run/methods/runout.hpp"
@@ -143,6 +144,23 @@ runout::RunoutResults simulate_dan(const runout::RunoutScenario& scenario) {
   return sim.results();
 }
 
+namespace {
+
+// A fixed step above the stable one at the start (block length over the
+// wave speed sqrt(k g h), Courant number 1) blows up within a few steps; the
+// speeds of the flow only lower that limit. Refused before the run.
+void check_fixed_step(const runout::RunoutScenario& sc, const runout::DanModel& model,
+                      const std::string& where) {
+  const double fixed = sc.control.time_step, limit = model.stable_time_step(1.0);
+  if (fixed > 0.0 && fixed > limit)
+    throw InputError(fmt::format(
+        "{}: {:.3g} s is above the stable step {:.3g} s of this path at the start (block length "
+        "/ wave speed sqrt(k g h)); use time_step = \"auto\" or a step below {:.3g} s",
+        where, fixed, limit, limit));
+}
+
+}  // namespace
+
 Method dan_method() {
   Method m;
   m.name = "dan";
@@ -153,6 +171,7 @@ Method dan_method() {
   m.validate = [](const io::ScenarioFile& f) {
     const auto sc = io::parse_runout_scenario(f);
     const auto setup = runout::build_dan(sc);
+    check_fixed_step(sc, setup.model, where_key(f, "run", "time_step"));
     Validation v{fmt::format("1D DAN runout, {} boundary blocks, {:.4g} m^3 released",
                              setup.model.size(), setup.model.total_mass() / sc.params.density)};
     const double dt = sc.control.time_step;
@@ -163,6 +182,7 @@ Method dan_method() {
     const auto sc = io::parse_runout_scenario(f);
     // Built before the folder is made: bad input leaves nothing behind.
     auto sim = std::make_unique<DanSimulation>(sc);
+    check_fixed_step(sc, sim->model(), where_key(f, "run", "time_step"));
     ctx.prepare();
     std::ofstream(ctx.out / "scenario.toml") << io::runout_scenario_to_toml(sc);
     sim->write_to(ctx.out);

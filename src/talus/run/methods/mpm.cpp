@@ -204,12 +204,7 @@ template class MpmSimulation<3>;
 namespace {
 
 // "file:line: [run] 'time_step'" for messages.
-std::string where_time_step(const io::ScenarioFile& f) {
-  const auto* node = f.table["run"]["time_step"].node();
-  const int line = node ? static_cast<int>(node->source().begin.line) : 0;
-  return line > 0 ? fmt::format("{}:{}: [run] 'time_step'", f.path, line)
-                  : fmt::format("{}: [run] 'time_step'", f.path);
-}
+std::string where_time_step(const io::ScenarioFile& f) { return where_key(f, "run", "time_step"); }
 
 // A fixed step above the stability limit (the CFL rule with Courant number 1
 // at the initial state) would blow up a few steps in and be reported as a
