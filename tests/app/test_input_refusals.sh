@@ -72,6 +72,8 @@ refused "MPM cell_size 1e-9" "[grid] cell_size = 1e-09 m: 9.1e+17 grid nodes" \
 check "... with the memory it would need" 'grep -q "GiB of memory, more than the" "$tmp/out"'
 refused "membrane spacing 1e-6" "[[membranes]] 'sheet' at spacing = 1e-06 m: 1.15e+10 vertices" \
   "$src/scenarios/membrane_sheet_drop.toml" --set membranes.0.spacing=1e-6
+refused "a random fill of 1e8 particles" "[[particles]] #0: about 1e+08 particles would need about" \
+  "$src/scenarios/collapse_2d.toml" --set particles.0.count=100000000
 TALUS_MEMORY_LIMIT=0.001 timeout 20 "$talus" validate "$src/scenarios/mpm_column_collapse.toml" \
   >"$tmp/out" 2>&1; rc=$?
 check "a limit the user sets (TALUS_MEMORY_LIMIT) is kept" '[ $rc -eq 2 ] && grep -q "of TALUS_MEMORY_LIMIT" "$tmp/out"'

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "talus/core/error.hpp"
+#include "talus/core/memory_limit.hpp"
 #include "talus/dem/membrane/beam_rig.hpp"
 #include "talus/dem/membrane/from_spec.hpp"
 #include "talus/dem/membrane/gripper.hpp"
@@ -85,9 +86,44 @@ Region region_of(const ParticleSourceParams& s, int dim) {
   return reg;
 }
 
+// Particles a source will place, known before placing them: a lattice's
+// sites, a packing's count or its solid volume over the mean particle's.
+double expected_count(const ParticleSourceParams& s, int dim) {
+  switch (s.kind) {
+    case SourceKind::List:
+      return static_cast<double>(s.particles.size());
+    case SourceKind::Lattice: {
+      double n = 1.0;
+      for (int d = 0; d < dim; ++d) n *= std::floor((s.box_max[d] - s.box_min[d]) / s.spacing);
+      return n;
+    }
+    case SourceKind::RandomFill:
+    case SourceKind::Grow: {
+      if (s.count) return *s.count;
+      const double r = 0.5 * (s.radius_min + s.radius_max);
+      const double ball = dim == 2 ? M_PI * r * r : 4.0 / 3.0 * M_PI * r * r * r;
+      const double solid = s.kind == SourceKind::Grow ? s.packing_fraction : 1.0 - s.porosity;
+      return solid * region_of(s, dim).area_or_volume() / ball;
+    }
+    case SourceKind::File:
+      return 0.0;  // as many as its lines: bounded by the file
+  }
+  return 0.0;
+}
+
 std::vector<Placed> place_particles(const DemScenario& sc, unsigned seed) {
   std::vector<Placed> out;
   const int dim = sc.run.dimension;
+  // About 1 KiB per particle: its state, its share of the neighbour list and
+  // contact history, the packing's scratch (an order of magnitude, not a bound).
+  double expected = 0.0;
+  for (std::size_t k = 0; k < sc.sources.size(); ++k) {
+    const double n = expected_count(sc.sources[k], dim);
+    expected += n;
+    check_memory(1024.0 * expected,
+                 fmt::format("[[particles]] #{}: about {:.3g} particles{}", k, n,
+                             k > 0 ? fmt::format(" ({:.3g} in all)", expected) : ""));
+  }
   int index = 0;
   for (const auto& s : sc.sources) {
     const std::string where = "[[particles]] #" + std::to_string(index++);
