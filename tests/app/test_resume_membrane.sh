@@ -30,6 +30,14 @@ resume_case() {
   for f in $files "$last"; do
     check "$name: $f identical" 'cmp -s "$tmp/$name-full/$f" "$tmp/$name-killed/$f" || { diff "$tmp/$name-full/$f" "$tmp/$name-killed/$f" | head -5; false; }'
   done
+  # Every physics figure of the summary (peaks included), not only the files.
+  check "$name: summary metrics identical" 'python3 - "$tmp/$name-full/summary.json" "$tmp/$name-killed/summary.json" <<PY
+import json, sys
+a, b = (json.load(open(p))["metrics"] for p in sys.argv[1:])
+if a != b:
+    print({k: (a[k], b.get(k)) for k in a if a[k] != b.get(k)})
+sys.exit(0 if a == b and a["peak_kinetic_energy_J"] > 0 else 1)
+PY'
 }
 
 # The sheet drop with 158 grains released just above the sheet, so that they
