@@ -130,6 +130,7 @@ RunResult execute(const RunRequest& req) {
   };
   SummaryInput summary;
   summary.setup_seconds = seconds_since(t0);
+  if (steps >= 0.0) summary.estimated_steps = steps;
   const std::int64_t first_step = sim->steps();
   RunResult result;
   result.out = out;

@@ -16,6 +16,7 @@ struct SummaryInput {
   std::string error;   // why it failed
   MethodReport report;
   std::int64_t steps = 0;
+  double estimated_steps = -1.0;  // before the run or its resumed part; < 0: unknown
   double simulated_time = 0.0, loop_seconds = 0.0, setup_seconds = 0.0;
   nlohmann::json experiments = nlohmann::json::object();  // name -> part
 };
