@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "talus/core/error.hpp"
+#include "talus/io/archive.hpp"
 
 namespace talus::run {
 namespace fs = std::filesystem;
@@ -68,14 +69,16 @@ void write_record(const fs::path& out, bool finished, const std::string& scenari
       if (!is_own(name) && name != std::string(kRecord) + ".tmp") entries.push_back(name);
     }
   std::sort(entries.begin(), entries.end());
-  const fs::path tmp = out / (std::string(kRecord) + ".tmp");
-  {
-    std::ofstream f(tmp);
-    f << (finished ? kFinished : kRunning) << '\n' << kScenario << scenario << '\n';
-    for (const auto& e : entries) f << e << '\n';
-    if (!f) throw InputError(fmt::format("{}: cannot write {}", out.string(), tmp.string()));
+  std::string text =
+      fmt::format("{}\n{}{}\n", finished ? kFinished : kRunning, kScenario, scenario);
+  for (const auto& e : entries) text += e + '\n';
+  // Whole or not at all (a full disk once left it empty): temporary file, then rename.
+  try {
+    io::write_file_atomically(out / kRecord, text);
+  } catch (const RunError& e) {
+    throw InputError(
+        fmt::format("{}: cannot record the run in its folder: {}", out.string(), e.what()));
   }
-  fs::rename(tmp, out / kRecord);
 }
 
 // FNV-1a of scenario.toml ("-" when there is none): enough to see an edit.

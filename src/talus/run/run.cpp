@@ -148,9 +148,14 @@ RunResult execute(const RunRequest& req) {
     for (auto& e : experiments) summary.experiments[e->name()] = e->finish();
     fill("completed", "");
     write_summary(out, summary);
-  } catch (const RunError& e) {
+  } catch (const std::exception& e) {
+    // Whatever stopped it (a RunError, a full disk): a summary that says so.
     fill("failed", e.what());
-    write_summary(out, summary);
+    try {
+      write_summary(out, summary);
+    } catch (const std::exception&) {
+      // On a full disk it may not fit either: the failure's own message is what counts.
+    }
     log.ended(fmt::format("failed at t = {:.6g} s: {}", sim->time(), e.what()));
     throw;
   }

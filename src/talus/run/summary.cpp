@@ -1,8 +1,7 @@
 #include "talus/run/summary.hpp"
 
-#include <fstream>
-
 #include "talus/core/version.hpp"
+#include "talus/io/archive.hpp"
 
 namespace talus::run {
 
@@ -31,9 +30,7 @@ nlohmann::json summary_json(const SummaryInput& in) {
 }
 
 void write_summary(const std::filesystem::path& out, const SummaryInput& in) {
-  const auto tmp = out / "summary.json.tmp";
-  std::ofstream(tmp) << summary_json(in).dump(2) << "\n";
-  std::filesystem::rename(tmp, out / "summary.json");
+  io::write_file_atomically(out / "summary.json", summary_json(in).dump(2) + "\n");
 }
 
 }  // namespace talus::run

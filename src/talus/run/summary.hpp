@@ -22,7 +22,8 @@ struct SummaryInput {
 };
 
 nlohmann::json summary_json(const SummaryInput& in);
-// Written next to the final name and renamed, so a reader never sees half a file.
+// Written next to the final name and renamed, so a reader never sees half a
+// file (io::write_file_atomically); RunError when it cannot be written.
 void write_summary(const std::filesystem::path& out, const SummaryInput& in);
 
 }  // namespace talus::run
