@@ -182,14 +182,14 @@ void check_inside(const DemScenario& sc, const DemSystem<D>& s) {
 // linear springs, 1.4 times that for Hertz at the same speed). Deeper than
 // the smallest radius, particles pass through the wall and the contact forces
 // are meaningless: the run is refused before it starts.
-void check_wall_speed(const geometry::Wall* wall, std::size_t index, double v, double t_c,
-                      double r_min) {
-  if (!wall || !(v * t_c > r_min)) return;
+void check_wall_speed(const geometry::Wall& wall, std::size_t index, double t_c, double r_min) {
+  const double v = wall.top_speed();
+  if (!(v * t_c > r_min)) return;
   throw InputError(fmt::format(
       "walls.{}.motion: wall '{}' moves at up to {:.4g} m/s; a particle it strikes would be "
       "pressed about {:.3g} m into it, more than the smallest particle radius ({:.3g} m), and "
       "would pass through it. Slow the wall below {:.3g} m/s or stiffen the contacts",
-      index, wall->name, v, v * t_c, r_min, r_min / t_c));
+      index, wall.name, v, v * t_c, r_min, r_min / t_c));
 }
 
 // Settles packings under gravity with the real contact law until the kinetic
@@ -274,8 +274,7 @@ std::unique_ptr<DemRun<D>> build_dem(const DemScenario& sc, const BuildOptions& 
   s.reference_speed =
       std::max({1.0, 2.0 * v_max, v_wall + v_max, std::sqrt(2.0 * sc.run.gravity.norm() * height)});
   s.critical_time_step = run->stepper->critical_time_step(s.reference_speed);
-  check_wall_speed(s.walls.empty() ? nullptr : &s.walls[fastest], fastest, v_wall,
-                   s.critical_time_step, r_min);
+  if (!s.walls.empty()) check_wall_speed(s.walls[fastest], fastest, s.critical_time_step, r_min);
   if (sc.run.time_step > 0.0) {
     if (sc.run.time_step > s.critical_time_step) {
       // Name the keys behind the critical step: the lightest particle's material.

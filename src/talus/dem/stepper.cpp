@@ -379,17 +379,13 @@ class Stepper final : public StepperBase<D> {
       bool inside = true;
       for (int d = 0; d < D; ++d)
         inside = inside && x[d] >= s_.domain_min[d] && x[d] <= s_.domain_max[d];
-      if (inside) keep.push_back(static_cast<int>(i));
+      if (inside)
+        keep.push_back(static_cast<int>(i));
+      else
+        s_.removed_kinetic_energy += 0.5 * p.m[i] * p.v[i].squaredNorm();
     }
     if (keep.size() == p.size()) return;
     s_.removed += static_cast<int64_t>(p.size() - keep.size());
-    for (std::size_t i = 0, k = 0; i < p.size(); ++i) {
-      if (k < keep.size() && keep[k] == static_cast<int>(i)) {
-        ++k;
-        continue;
-      }
-      s_.removed_kinetic_energy += 0.5 * p.m[i] * p.v[i].squaredNorm();
-    }
     // Renumber the lists for the survivors, so the next build can carry their history.
     auto& nl = s_.neighbours;
     std::vector<int> new_index(p.size(), -1);

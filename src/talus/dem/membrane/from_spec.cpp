@@ -18,18 +18,17 @@ namespace {
 void check_mesh_memory(const MembraneSpec& s, double area) {
   const double vertices = area / (s.spacing * s.spacing * std::sqrt(3.0) / 2);
   check_memory(1024.0 * vertices,
-               fmt::format("[[membranes]] '{}' at spacing = {:.3g} m: {:.3g} vertices",
-                           s.name, s.spacing, vertices));
+               fmt::format("[[membranes]] '{}' at spacing = {:.3g} m: {:.3g} vertices", s.name,
+                           s.spacing, vertices));
 }
 
 Mesh generate(const MembraneSpec& s) {
-  constexpr double kPi = 3.14159265358979323846;
   switch (s.mesh) {
     case MembraneMeshKind::FlatSheet:
       check_mesh_memory(s, s.size_x * s.size_y);
       break;
     case MembraneMeshKind::Cylinder:
-      check_mesh_memory(s, 2 * kPi * s.radius * (s.height + (s.caps ? s.radius : 0.0)));
+      check_mesh_memory(s, 2 * M_PI * s.radius * (s.height + (s.caps ? s.radius : 0.0)));
       break;
     case MembraneMeshKind::Box:
       check_mesh_memory(s, 2 * (s.size_x * s.size_y + s.size_y * s.size_z + s.size_z * s.size_x));
