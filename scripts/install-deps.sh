@@ -8,6 +8,8 @@ pkgs=(cmake g++ make libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       python3 python3-vtk9 python3-matplotlib python3-numpy)
 # The peer benchmark needs LIGGGHTS; only bench/peer.sh asks for it.
 [ "${TALUS_WITH_PEERS:-0}" = 1 ] && pkgs+=(liggghts)
+# The scenario reader's fuzzer needs clang's libFuzzer and OpenMP; only scripts/fuzz.sh asks for it.
+[ "${TALUS_WITH_FUZZ:-0}" = 1 ] && pkgs+=(clang libomp-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

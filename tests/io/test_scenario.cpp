@@ -353,6 +353,20 @@ TEST_P(RoundTrip, WrittenTomlParsesBackToTheSameValues) {
 INSTANTIATE_TEST_SUITE_P(Scenario, RoundTrip,
                          testing::Values("full_2d.toml", "full_3d.toml", "flume_2d.toml"));
 
+// Found by the scenario fuzzer (tests/fuzz/regressions/set_value_control_character):
+// text with control characters must be escaped in the resolved scenario.
+TEST(Scenario, ControlCharactersInTextSurviveTheResolvedFile) {
+  const char raw[] = "tab\there, nul \0, bell \a, del \x7F, \"q\" \\";
+  const std::string text(raw, sizeof raw - 1);
+  auto file = load_scenario_file(kData + "full_2d.toml", {});
+  file.table.insert_or_assign("description", text);
+  const DemScenario original = parse_dem_scenario(file);
+  const std::string written = scenario_to_toml(original);
+  const DemScenario again =
+      parse_dem_scenario(load_scenario_text(written, "/tmp/elsewhere/x.toml"));
+  EXPECT_EQ(again.description, text);
+}
+
 TEST(Scenario, JsonHasTheResolvedValuesWithAnglesInDegrees) {
   const nlohmann::json j2 = scenario_to_json(parse_file("full_2d.toml"));
   EXPECT_EQ(j2["method"], "dem");

@@ -149,5 +149,17 @@ TEST(TomlReader, OverridesParseValuesAsTomlAndFallBackToStrings) {
             "f.toml: --set run.duration: expected a string, got 2");
 }
 
+// Found by the scenario fuzzer (tests/fuzz/regressions/set_value_not_utf8):
+// a value TOML cannot hold would reach the run's scenario.toml.
+TEST(TomlReader, OverridesThatAreNotUtf8AreRefused) {
+  toml::table table;
+  EXPECT_EQ(error_of([&] { apply_overrides(table, {"name=caf\xE9"}); }),
+            "--set: the value is not valid UTF-8 text");
+  EXPECT_THROW(apply_overrides(table, {"name=\xC0\xAF"}), InputError);      // overlong '/'
+  EXPECT_THROW(apply_overrides(table, {"name=\xED\xA0\x80"}), InputError);  // a surrogate
+  apply_overrides(table, {"name=caf\xC3\xA9 \xF0\x9F\x8C\x8B"});            // "café 🌋"
+  EXPECT_EQ(table["name"].value<std::string>(), "caf\xC3\xA9 \xF0\x9F\x8C\x8B");
+}
+
 }  // namespace
 }  // namespace talus::io

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 #include "talus/core/error.hpp"
@@ -53,6 +54,31 @@ std::optional<std::size_t> parse_index(std::string_view s) {
 }
 
 // The value of an override: TOML when it parses as such, else a plain string.
+// Well-formed UTF-8 (RFC 3629: no overlong forms, surrogates or code points
+// above U+10FFFF), as TOML requires of a file: a --set value that is not
+// would be written into the run's scenario.toml, which then could not be read.
+bool is_utf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = c < 0x80           ? 1
+                          : (c >> 5) == 0x6  ? 2
+                          : (c >> 4) == 0xE  ? 3
+                          : (c >> 3) == 0x1E ? 4
+                                             : 0;
+    if (n == 0 || i + n > text.size()) return false;
+    std::uint32_t code = n == 1 ? c : c & (0x7F >> n);
+    for (std::size_t k = 1; k < n; ++k) {
+      const auto b = static_cast<unsigned char>(text[i + k]);
+      if ((b >> 6) != 0x2) return false;
+      code = (code << 6) | (b & 0x3F);
+    }
+    static constexpr std::uint32_t kSmallest[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (code < kSmallest[n] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
+    i += n;
+  }
+  return true;
+}
+
 toml::table parse_override_value(std::string_view value) {
   try {
     return toml::parse(fmt::format("value = {}", value));
@@ -399,6 +425,7 @@ void TomlReader::finish() const {
 
 void apply_overrides(toml::table& table, const std::vector<std::string>& sets) {
   for (const std::string& set : sets) {
+    if (!is_utf8(set)) throw InputError("--set: the value is not valid UTF-8 text");
     const auto equals = set.find('=');
     const std::string_view key =
         trim(std::string_view(set).substr(0, std::min(equals, set.size())));

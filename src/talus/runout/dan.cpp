@@ -38,6 +38,17 @@ DanModel::DanModel(RunoutPath path, DanParams params, DanBlocks blocks)
   depth_energy_start_ = depth_energy();
 }
 
+void DanModel::restore(DanBlocks blocks, EnergyWatch watch) {
+  const std::size_t n = size();
+  if (blocks.s.size() != n || blocks.v.size() != n || blocks.k.size() != n - 1 ||
+      blocks.volume != b_.volume)
+    throw InputError("DAN: the checkpoint's blocks are not this scenario's");
+  b_ = std::move(blocks);
+  energy_min_ = watch.lowest;
+  kinetic_peak_ = watch.kinetic_peak;
+  depth_energy_start_ = watch.depth_start;
+}
+
 double DanModel::width_between(std::size_t j) const {
   return 0.5 * (path_.width(b_.s[j]) + path_.width(b_.s[j + 1]));
 }

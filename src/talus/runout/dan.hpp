@@ -42,8 +42,8 @@
 // so far by more than energy_growth_tolerance times the larger of the initial
 // depth energy and the largest kinetic energy so far throws a RunError naming
 // the time. On the flume (docs/validation.md) healthy runs regrow by at most
-// 0.11 of that scale (0.108 measured; the profile scenario 0.08) (the Hungr law stores and returns some energy in k; the
-// explicit step's energy error), the unstable ones by 1 to 2.
+// 0.11 of that scale (0.108 measured; the profile scenario 0.08) (the Hungr law stores and returns
+// some energy in k; the explicit step's energy error), the unstable ones by 1 to 2.
 #include <vector>
 
 #include "talus/runout/earth_pressure.hpp"
@@ -110,6 +110,16 @@ class DanModel {
   double total_energy() const;
   double depth_energy() const;  // sum rho g cos(psi) V_j h_j / 2, J
   double max_speed() const;
+
+  // The energy check's memory: part of a checkpoint.
+  struct EnergyWatch {
+    double lowest = 0.0, kinetic_peak = 0.0, depth_start = 0.0;
+  };
+  EnergyWatch energy_watch() const { return {energy_min_, kinetic_peak_, depth_energy_start_}; }
+  // Continues from a checkpoint of this model: the blocks must have its sizes
+  // and volumes (else InputError).
+  void restore(DanBlocks blocks, EnergyWatch watch);
+
   // Every block slower than kRestSpeed (held by friction).
   bool at_rest() const;
   static constexpr double kRestSpeed = 1e-6;  // m/s

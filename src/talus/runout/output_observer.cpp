@@ -4,13 +4,16 @@
 
 namespace talus::runout {
 
-DanOutputs::DanOutputs(std::filesystem::path dir) : dir_(std::move(dir)) {
+DanOutputs::DanOutputs(std::filesystem::path dir, bool resume, double resume_time)
+    : path_written_(resume), dir_(std::move(dir)) {
+  if (resume) io::CsvSeries::truncate_after(dir_ / "series.csv", resume_time);
   series_ = std::make_unique<io::CsvSeries>(
       dir_ / "series.csv",
       std::vector<std::string>{"time", "front_s", "tail_s", "front_x", "front_y", "max_speed",
                                "max_depth", "kinetic_energy", "momentum", "mass", "volume"},
-      false);
-  blocks_ = std::make_unique<io::PvdSeries>(dir_, "blocks");
+      resume);
+  blocks_ = std::make_unique<io::PvdSeries>(dir_, "blocks", resume);
+  if (resume) blocks_->truncate_after(resume_time);
 }
 
 void DanOutputs::on_series(const DanModel& m) {

@@ -18,7 +18,9 @@ namespace talus::runout {
 
 class DanOutputs final {
  public:
-  explicit DanOutputs(std::filesystem::path dir);
+  // resume = true continues the files of a run interrupted after its
+  // checkpoint at resume_time (dropping what was written after it).
+  explicit DanOutputs(std::filesystem::path dir, bool resume = false, double resume_time = 0.0);
   void on_series(const DanModel& model);
   void on_snapshot(const DanModel& model);
   // Flushes the files a user may follow during the run.

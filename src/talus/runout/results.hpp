@@ -4,6 +4,7 @@
 // the path in time, the final deposit's surface profile, its tail, the run-up
 // on the barrier and the arrival time there.
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "talus/runout/dan.hpp"
@@ -54,6 +55,8 @@ class RunoutTracker {
   // Deposit, final run-up and tail from the model's current state.
   const RunoutResults& finish(const DanModel& model);
   const RunoutResults& results() const { return r_; }
+  // Continues from a checkpoint: what the interrupted run had gathered.
+  void restore(RunoutResults results) { r_ = std::move(results); }
 
  private:
   double barrier_s_, tail_fraction_;

@@ -54,12 +54,13 @@ struct GridSpec {
 
 // How long a runout run goes and when it writes (both models).
 struct RunoutControl {
-  double duration = 1.0;           // s
-  double time_step = 0.0;          // s; 0 = from the stability limit every step (DAN)
-  double courant = 0.5;            // DAN
-  double series_interval = 0.01;   // s; also the front sampling
-  double snapshot_interval = 0.0;  // s; 0 = first and last only
-  bool stop_at_rest = true;        // end early once the mass has stopped
+  double duration = 1.0;             // s
+  double time_step = 0.0;            // s; 0 = from the stability limit every step (DAN)
+  double courant = 0.5;              // DAN
+  double series_interval = 0.01;     // s; also the front sampling
+  double snapshot_interval = 0.0;    // s; 0 = first and last only
+  double checkpoint_interval = 0.0;  // s; 0 = none (checkpoint.bin to resume from)
+  bool stop_at_rest = true;          // end early once the mass has stopped
 };
 
 struct RunoutScenario {

@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "talus/core/error.hpp"
-#include "talus/scenario/scenario.hpp"
 #include "talus/io/toml_reader.hpp"
+#include "talus/scenario/scenario.hpp"
 
 namespace talus::io {
 

@@ -173,7 +173,9 @@ void merge_over(toml::table& base, toml::table&& top) {
     if (below && below->is_table() && node.is_table()) {
       merge_over(*below->as_table(), std::move(*node.as_table()));
     } else {
-      node.visit([&](auto&& value) { base.insert_or_assign(key, std::move(value)); });
+      // A named reference: clang before 16 cannot capture a structured binding.
+      const toml::key& name = key;
+      node.visit([&](auto&& value) { base.insert_or_assign(name, std::move(value)); });
     }
   }
 }

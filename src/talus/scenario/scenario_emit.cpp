@@ -43,15 +43,21 @@ bool is_section(const Json& v) {
   return (v.is_object() && !is_inline_table(v)) || is_array_of_tables(v);
 }
 
+// A TOML basic string: quotes, backslashes and control characters other than
+// tab escaped (TOML forbids them raw), so that any text read back is the same.
 std::string quoted(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\', out += c;
+    } else if (c == '\n') {
       out += "\\n";
-      continue;
+    } else if ((u < 0x20 && c != '\t') || u == 0x7F) {
+      out += fmt::format("\\u{:04X}", u);
+    } else {
+      out += c;
     }
-    out += c;
   }
   return out + "\"";
 }

@@ -243,6 +243,7 @@ void read_grid_release(TomlReader& r, const detail::DemContext& ctx, runout::Gri
 
 void read_output(TomlReader& r, runout::RunoutScenario& s) {
   s.control.series_interval = number_in(r, "series_interval", 0.01, positive());
+  s.control.checkpoint_interval = number_in(r, "checkpoint_interval", 0.0, non_negative());
   if (s.model == RunoutModel::Fv2d) {
     r.reject({"snapshot_interval", "tail_fraction"}, "is not used by model 'fv2d'");
     r.finish();
@@ -415,7 +416,9 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
                 {"material", material},
                 {"earth_pressure", pressure},
                 {"release", {{"type", "raster"}, {"file", s.grid.release_file}}},
-                {"output", {{"series_interval", s.control.series_interval}}}};
+                {"output",
+                 {{"series_interval", s.control.series_interval},
+                  {"checkpoint_interval", s.control.checkpoint_interval}}}};
   }
   Json smoothing = {{"enabled", p.smoothing.enabled},
                     {"c_end", p.smoothing.c_end},
@@ -430,6 +433,7 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
   }
   Json output = {{"series_interval", s.control.series_interval},
                  {"snapshot_interval", s.control.snapshot_interval},
+                 {"checkpoint_interval", s.control.checkpoint_interval},
                  {"tail_fraction", s.tail_fraction}};
   return Json{{"method", "runout"},
               {"name", s.name},

@@ -66,12 +66,13 @@ void apply_beam(const BeamParams& b, const DemScenario& sc, DemSystem<3>& s) {
     if (bottom) rig.faces[2].push_back(id);
     if (top) rig.faces[3].push_back(id);
   }
+  const double spacing = spec.spacing;  // clang before 16 cannot capture a structured binding
   auto need = [&](const std::vector<int>& set, const char* key, const char* face) {
     if (set.empty())
       throw InputError(
           fmt::format("[beam] '{}': no membrane particle of '{}' on its {} face "
                       "within it (membrane spacing {} m)",
-                      key, b.membrane, face, spec.spacing));
+                      key, b.membrane, face, spacing));
   };
   need(rig.supports, "support_length", "flat bottom");
   if (four) {

@@ -3,13 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <functional>
 #include <limits>
 
 #include "talus/core/error.hpp"
 #include "talus/run/loop.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/run/methods/runout.hpp"
+#include "talus/runout/checkpoint.hpp"
 #include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::run {
@@ -20,8 +21,8 @@ namespace {
 class DanSeries final : public Observer {
  public:
   DanSeries(runout::RunoutTracker& tracker, const runout::DanModel& model,
-            runout::DanOutputs* files)
-      : tracker_(tracker), model_(model), files_(files) {}
+            runout::DanOutputs* files, std::function<void()> save = {})
+      : tracker_(tracker), model_(model), files_(files), save_(std::move(save)) {}
   void on_series() override {
     tracker_.sample_front(model_);
     if (files_) files_->on_series(model_);
@@ -32,11 +33,16 @@ class DanSeries final : public Observer {
   void on_progress() override {
     if (files_) files_->flush();
   }
+  void on_checkpoint() override {
+    if (files_) files_->flush();
+    if (save_) save_();
+  }
 
  private:
   runout::RunoutTracker& tracker_;
   const runout::DanModel& model_;
   runout::DanOutputs* files_;
+  std::function<void()> save_;  // writes checkpoint.bin
 };
 
 }  // namespace
@@ -47,19 +53,31 @@ DanSimulation::DanSimulation(runout::RunoutScenario scenario)
       tracker_(setup_.barrier_start_s, scenario_.tail_fraction),
       outputs_(std::make_unique<DanSeries>(tracker_, setup_.model, nullptr)) {}
 
-void DanSimulation::write_to(const std::filesystem::path& out) {
-  files_ = std::make_unique<runout::DanOutputs>(out);
-  outputs_ = std::make_unique<DanSeries>(tracker_, setup_.model, files_.get());
+void DanSimulation::write_to(const std::filesystem::path& out, bool resume) {
+  checkpoint_ = out / "checkpoint.bin";
+  if (resume) {
+    const auto count = runout::load_checkpoint(setup_.model, tracker_, checkpoint_);
+    steps_ = count.steps, last_dt_ = count.last_time_step;
+  }
+  files_ = std::make_unique<runout::DanOutputs>(out, resume, time());
+  outputs_ = std::make_unique<DanSeries>(tracker_, setup_.model, files_.get(), [this] {
+    runout::save_checkpoint(setup_.model, tracker_, {steps_, last_dt_}, checkpoint_);
+  });
 }
 
 Schedules DanSimulation::schedules() const {
   Schedules s;
   s.series = OutputSchedule(std::max(scenario_.control.series_interval, 1e-12));
   s.snapshots = OutputSchedule(scenario_.control.snapshot_interval);
+  const double every = scenario_.control.checkpoint_interval;
+  s.checkpoints = OutputSchedule(every > 0.0 && !checkpoint_.empty() ? every : -1.0);
   return s;
 }
 
-void DanSimulation::start(bool /*fresh*/) { tracker_.observe_step(setup_.model); }
+// A resumed run's state was observed by the interrupted run.
+void DanSimulation::start(bool fresh) {
+  if (fresh) tracker_.observe_step(setup_.model);
+}
 
 void DanSimulation::advance(double target, double tolerance, std::int64_t max_steps) {
   auto& model = setup_.model;
@@ -164,7 +182,6 @@ void check_fixed_step(const runout::RunoutScenario& sc, const runout::DanModel& 
 Method dan_method() {
   Method m;
   m.name = "dan";
-  m.checkpoints = false;
   m.accepts = [](const io::ScenarioFile& f) {
     return f.method == "runout" && f.table["run"]["model"].value_or(std::string("dan")) == "dan";
   };
@@ -183,9 +200,11 @@ Method dan_method() {
     // Built before the folder is made: bad input leaves nothing behind.
     auto sim = std::make_unique<DanSimulation>(sc);
     check_fixed_step(sc, sim->model(), where_key(f, "run", "time_step"));
-    ctx.prepare();
-    std::ofstream(ctx.out / "scenario.toml") << io::runout_scenario_to_toml(sc);
-    sim->write_to(ctx.out);
+    if (!ctx.resume) {
+      ctx.prepare();
+      sim = std::make_unique<DanSimulation>(write_resolved_runout(sc, ctx.out));
+    }
+    sim->write_to(ctx.out, ctx.resume);
     return sim;
   };
   return m;

@@ -3,11 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <functional>
 
 #include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/run/methods/runout.hpp"
+#include "talus/runout/checkpoint.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
 #include "talus/scenario/scenario_runout.hpp"
 
@@ -19,18 +20,48 @@ Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
       outputs_(std::make_unique<Observer>()),
       threads_(threads) {}
 
-void Fv2dSimulation::write_to(const std::filesystem::path& out) {
-  files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid);
-  outputs_ = std::make_unique<Forward<runout::Fv2dOutputs, runout::Fv2dSolver>>(*files_, solver_);
+namespace {
+
+// The method's files, and checkpoint.bin at the checkpoint times.
+class Fv2dFiles final : public Forward<runout::Fv2dOutputs, runout::Fv2dSolver> {
+ public:
+  Fv2dFiles(runout::Fv2dOutputs& files, const runout::Fv2dSolver& solver,
+            std::function<void()> save)
+      : Forward(files, solver), save_(std::move(save)) {}
+  void on_checkpoint() override {
+    target_.flush();
+    save_();
+  }
+
+ private:
+  std::function<void()> save_;
+};
+
+}  // namespace
+
+void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
+  checkpoint_ = out / "checkpoint.bin";
+  if (resume) {
+    const auto count = runout::load_checkpoint(solver_, maxima_, initial_volume_, checkpoint_);
+    steps_ = count.steps, last_dt_ = count.last_time_step;
+  }
+  files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid, resume, time());
+  outputs_ = std::make_unique<Fv2dFiles>(*files_, solver_, [this] {
+    runout::save_checkpoint(solver_, maxima_, initial_volume_, {steps_, last_dt_}, checkpoint_);
+  });
 }
 
 Schedules Fv2dSimulation::schedules() const {
   Schedules s;
   s.series = OutputSchedule(std::max(scenario_.control.series_interval, 1e-12));
-  return s;  // no snapshots yet, no checkpoints
+  const double every = scenario_.control.checkpoint_interval;
+  s.checkpoints = OutputSchedule(every > 0.0 && !checkpoint_.empty() ? every : -1.0);
+  return s;  // no snapshots yet
 }
 
-void Fv2dSimulation::start(bool /*fresh*/) {
+// A resumed run's maxima and released volume come from its checkpoint.
+void Fv2dSimulation::start(bool fresh) {
+  if (!fresh) return;
   maxima_.reset(solver_.terrain().shape().cells());
   maxima_.observe(solver_);
   initial_volume_ = solver_.volume();
@@ -111,7 +142,6 @@ MethodReport Fv2dSimulation::report() const {
 Method fv2d_method() {
   Method m;
   m.name = "fv2d";
-  m.checkpoints = false;
   m.accepts = [](const io::ScenarioFile& f) {
     return f.method == "runout" && f.table["run"]["model"].value_or(std::string()) == "fv2d";
   };
@@ -125,12 +155,14 @@ Method fv2d_method() {
         sc.control.duration / dt, sc.control.duration};
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) -> std::unique_ptr<Simulation> {
-    const auto sc = io::parse_runout_scenario(f);
+    auto sc = io::parse_runout_scenario(f);
     // Built before the folder is made: bad input leaves nothing behind.
     auto sim = std::make_unique<Fv2dSimulation>(sc, ctx.threads);
-    ctx.prepare();
-    std::ofstream(ctx.out / "scenario.toml") << io::runout_scenario_to_toml(sc);
-    sim->write_to(ctx.out);
+    if (!ctx.resume) {
+      ctx.prepare();
+      sim = std::make_unique<Fv2dSimulation>(write_resolved_runout(sc, ctx.out), ctx.threads);
+    }
+    sim->write_to(ctx.out, ctx.resume);
     return sim;
   };
   return m;

@@ -2,7 +2,8 @@
 // The depth-averaged methods on the run loop: DAN (1D, run/methods/dan.cpp)
 // and fv2d (2D on a terrain grid, run/methods/fv2d.cpp). Both may end early
 // once the mass is at rest. Without an output folder they write nothing
-// (calibration, comparisons, tests).
+// (calibration, comparisons, tests); with one they write checkpoint.bin at
+// output.checkpoint_interval (runout/checkpoint.hpp).
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -20,8 +21,9 @@ namespace talus::run {
 class DanSimulation : public Simulation {
  public:
   explicit DanSimulation(runout::RunoutScenario scenario);
-  // Writes the run's files into `out` (without: none).
-  void write_to(const std::filesystem::path& out);
+  // Writes the run's files into `out` (without: none). resume = true first
+  // restores the state from out/checkpoint.bin and continues the files.
+  void write_to(const std::filesystem::path& out, bool resume = false);
 
   double time() const override { return setup_.model.blocks().time; }
   std::int64_t steps() const override { return steps_; }
@@ -47,6 +49,7 @@ class DanSimulation : public Simulation {
   runout::RunoutTracker tracker_;
   std::unique_ptr<runout::DanOutputs> files_;
   std::unique_ptr<Observer> outputs_;
+  std::filesystem::path checkpoint_;  // empty: no files
   std::int64_t steps_ = 0;
   double last_dt_ = 0.0;
   bool stopped_ = false;
@@ -55,8 +58,9 @@ class DanSimulation : public Simulation {
 class Fv2dSimulation : public Simulation {
  public:
   explicit Fv2dSimulation(runout::RunoutScenario scenario, int threads = 1);
-  // Writes the run's files into `out` (without: none).
-  void write_to(const std::filesystem::path& out);
+  // Writes the run's files into `out` (without: none). resume = true first
+  // restores the state from out/checkpoint.bin and continues the files.
+  void write_to(const std::filesystem::path& out, bool resume = false);
 
   double time() const override { return solver_.state().time; }
   std::int64_t steps() const override { return steps_; }
@@ -83,12 +87,19 @@ class Fv2dSimulation : public Simulation {
   runout::Fv2dMaxima maxima_;
   std::unique_ptr<runout::Fv2dOutputs> files_;
   std::unique_ptr<Observer> outputs_;
+  std::filesystem::path checkpoint_;  // empty: no files
   int threads_;
   double initial_volume_ = 0.0;
   std::int64_t steps_ = 0;
   double last_dt_ = 0.0;
   bool stopped_ = false;
 };
+
+// Writes the resolved scenario into out/scenario.toml and reads it back: a
+// fresh run starts from the numbers a resumed one will read (an angle through
+// degrees and back may differ in its last bit).
+runout::RunoutScenario write_resolved_runout(const runout::RunoutScenario& scenario,
+                                             const std::filesystem::path& out);
 
 // Runs a DAN scenario to its end without writing anything (for `talus
 // compare`, calibration and tests): the results of the finished run.

@@ -119,6 +119,13 @@ void Fv2dSolver::set_state(const FlowState& state) {
   s_ = state;
 }
 
+void Fv2dSolver::restore(const FlowState& state, std::vector<double> k, double outflow) {
+  if (k.size() != k_.size()) throw InputError("fv2d: the checkpoint's grid is not this scenario's");
+  set_state(state);
+  k_ = std::move(k);
+  outflow_ = outflow;
+}
+
 double Fv2dSolver::normal_height(std::size_t c) const {
   return s_.h[c] * std::sqrt(terrain_.cos2()[c]);
 }

@@ -77,6 +77,10 @@ class Fv2dSolver {
   // Replaces depths, momenta and time (e.g. a moving start). Throws
   // InputError for a size mismatch or a negative or non-finite value.
   void set_state(const FlowState& state);
+  // Continues from a checkpoint: the state, the earth-pressure coefficients
+  // (kept where the flow neither spreads nor converges) and the outflow so
+  // far. Throws InputError for sizes that are not this grid's.
+  void restore(const FlowState& state, std::vector<double> k, double outflow);
   const Terrain& terrain() const { return terrain_; }
   const Fv2dParams& params() const { return p_; }
   const std::vector<double>& earth_pressure() const { return k_; }

@@ -4,14 +4,16 @@
 
 namespace talus::runout {
 
-Fv2dOutputs::Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid)
+Fv2dOutputs::Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid, bool resume,
+                         double resume_time)
     : dir_(std::move(dir)), grid_(grid) {
+  if (resume) io::CsvSeries::truncate_after(dir_ / "series.csv", resume_time);
   series_ = std::make_unique<io::CsvSeries>(
       dir_ / "series.csv",
       std::vector<std::string>{"time", "volume", "outflow_volume", "mass", "momentum_x",
                                "momentum_y", "kinetic_energy", "max_speed", "max_height",
                                "flowing_area"},
-      false);
+      resume);
 }
 
 void Fv2dOutputs::on_series(const Fv2dSolver& s) {

@@ -15,7 +15,10 @@ namespace talus::runout {
 
 class Fv2dOutputs final {
  public:
-  Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid);
+  // resume = true continues series.csv of a run interrupted after its
+  // checkpoint at resume_time (dropping the rows written after it).
+  Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid, bool resume = false,
+              double resume_time = 0.0);
   void on_series(const Fv2dSolver& solver);
   // Flushes the files a user may follow during the run.
   void flush();
