@@ -117,6 +117,25 @@ TEST(ScenarioExtends, ErrorsNameTheFileTheValueCameFrom) {
   EXPECT_NE(cycle.find("cycle"), std::string::npos) << cycle;
 }
 
+// A base names its files from its own folder; the child's own file names (and
+// --set values) are relative to the child's.
+TEST(ScenarioExtends, FileNamesResolveAgainstTheFileTheyAreWrittenIn) {
+  const fs::path dir = folder();
+  std::string base = kBase;
+  base.replace(base.find("[[particles.list]]"), std::string::npos, "file = \"grains.csv\"\n");
+  base.replace(base.find("type = \"list\""), 13, "type = \"file\"");
+  write(dir / "grains.csv", "x,y,radius\n0.5,0.5,0.01\n");
+  write(dir / "base.toml", base);
+  const auto child = write(dir / "sub" / "child.toml", "extends = \"../base.toml\"\n");
+  const auto s = parse_dem_scenario(load_scenario_file(child, {}));
+  ASSERT_EQ(s.sources.size(), 1u);
+  EXPECT_EQ(fs::path(s.sources[0].file), fs::absolute(dir / "grains.csv").lexically_normal());
+  write(dir / "sub" / "grains.csv", "x,y,radius\n0.5,0.5,0.01\n");
+  const auto own = parse_dem_scenario(load_scenario_file(child, {"particles.0.file=grains.csv"}));
+  EXPECT_EQ(fs::path(own.sources[0].file),
+            fs::absolute(dir / "sub" / "grains.csv").lexically_normal());
+}
+
 TEST(ScenarioExtends, BundledFlumeVariantsDifferOnlyWhereTheySay) {
   const std::string dir = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
   const auto a3 = parse_dem_scenario(load_scenario_file(dir + "flume_A_model3.toml", {}));

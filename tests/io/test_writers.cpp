@@ -276,4 +276,24 @@ TEST_F(WritersTest, CsvIoFailureIsARunError) {
   }
 }
 
+// A table written once appears whole at close() or not at all (issue 28 §3:
+// a full disk left a cut file behind without a word).
+TEST_F(WritersTest, CsvWholeTableAppearsOnlyWhenClosed) {
+  const fs::path path = dir_ / "deposit.csv", temp = dir_ / "deposit.csv.tmp";
+  {
+    auto table = CsvSeries::whole(path, {"s", "depth"});
+    table.row({0.5, 0.1});
+    EXPECT_FALSE(fs::exists(path));
+    table.close();
+  }
+  EXPECT_EQ(read_text(path), "s,depth\n0.5,0.1\n");
+  EXPECT_FALSE(fs::exists(temp));
+  {
+    auto interrupted = CsvSeries::whole(path, {"s", "depth"});
+    interrupted.row({9.0, 9.0});
+  }  // an exception on the way: the old file stays, no temporary file
+  EXPECT_EQ(read_text(path), "s,depth\n0.5,0.1\n");
+  EXPECT_FALSE(fs::exists(temp));
+}
+
 }  // namespace

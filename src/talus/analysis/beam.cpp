@@ -119,16 +119,15 @@ nlohmann::json BeamObserver::finish() const {
   if (done == 0) return j;
   const double z0 = steps_[0].z / steps_[0].rows;
   std::vector<double> loads, deflections;
-  io::CsvSeries table(out_ / "beam_steps.csv",
-                      {"step", "load", "bottom_centre_z", "deflection", "support_reaction_z"},
-                      false);
+  auto table = io::CsvSeries::whole(out_ / "beam_steps.csv", {"step", "load", "bottom_centre_z",
+                                                              "deflection", "support_reaction_z"});
   for (int k = 0; k < done; ++k) {
     const double zk = steps_[k].z / steps_[k].rows, rk = steps_[k].reaction / steps_[k].rows;
     table.row({static_cast<double>(k), b_.step_load(k), zk, z0 - zk, rk});
     loads.push_back(b_.step_load(k));
     deflections.push_back(z0 - zk);
   }
-  table.flush();
+  table.close();
   j["load"] = loads;
   j["deflection"] = deflections;
   if (done > n) {

@@ -76,9 +76,9 @@ nlohmann::json report_dam_break(const Grains& grains, const dem::DamBreakParams&
   const SlopeAngles a =
       slope_angles(profile, toe_thickness, params.segment_length, params.segments);
   std::filesystem::create_directories(out / "dam_break");
-  io::CsvSeries csv(out / "dam_break" / "surface.csv", {"x", "top"}, false);
+  auto csv = io::CsvSeries::whole(out / "dam_break" / "surface.csv", {"x", "top"});
   for (std::size_t k = 0; k < profile.x.size(); ++k) csv.row({profile.x[k], profile.top[k]});
-  csv.flush();
+  csv.close();
   // JSON has no NaN: a segment behind the back wall is null.
   auto number = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
   nlohmann::json j = {{"toe_x", a.toe_x},

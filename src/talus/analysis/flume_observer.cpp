@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include "talus/analysis/dam_break.hpp"
 #include "talus/core/error.hpp"
+#include "talus/io/archive.hpp"
 #include "talus/io/csv_reader.hpp"
 
 namespace talus::analysis {
@@ -66,7 +66,7 @@ FlumeObserver::FlumeObserver(std::filesystem::path out, const geometry::FlumeGeo
   last_time_ = system.time;
   {
     // The bed line, for plots: every millimetre of path.
-    io::CsvSeries path(dir_ / "path.csv", {"s", "x", "y"}, false);
+    auto path = io::CsvSeries::whole(dir_ / "path.csv", {"s", "x", "y"});
     const double s0 = geometry_.chute_start_s(), s1 = geometry_.path_end_s();
     const int n = static_cast<int>(std::ceil((s1 - s0) / 1e-3));
     for (int k = 0; k <= n; ++k) {
@@ -74,7 +74,7 @@ FlumeObserver::FlumeObserver(std::filesystem::path out, const geometry::FlumeGeo
       const Vec2 x = geometry_.point_at(s);
       path.row({s, x.x(), x.y()});
     }
-    path.flush();
+    path.close();
   }
   const auto layers_csv = dir_ / "layers.csv";
   if (resume) {
@@ -87,10 +87,10 @@ FlumeObserver::FlumeObserver(std::filesystem::path out, const geometry::FlumeGeo
     io::CsvSeries::truncate_after(dir_ / "front.csv", resume_time);
   } else {
     layer_by_id_ = initial_layers(system.particles, params.layers);
-    io::CsvSeries layers(layers_csv, {"id", "layer"}, false);
+    auto layers = io::CsvSeries::whole(layers_csv, {"id", "layer"});
     for (std::size_t id = 0; id < layer_by_id_.size(); ++id)
       layers.row({static_cast<double>(id), static_cast<double>(layer_by_id_[id])});
-    layers.flush();
+    layers.close();
   }
   front_ = std::make_unique<io::CsvSeries>(dir_ / "front.csv", front_columns(), resume);
 }
@@ -143,11 +143,11 @@ void FlumeObserver::on_series(const dem::DemRun<2>& run) {
 void FlumeObserver::on_snapshot(const dem::DemRun<2>& run) {
   const auto& s = run.system;
   const auto& p = s.particles;
-  io::CsvSeries frame(dir_ / "frames" / fmt::format("t_{:07.3f}.csv", s.time),
-                      {"x", "y", "r", "layer"}, false);
+  auto frame = io::CsvSeries::whole(dir_ / "frames" / fmt::format("t_{:07.3f}.csv", s.time),
+                                    {"x", "y", "r", "layer"});
   for (std::size_t i = 0; i < p.size(); ++i)
     frame.row({p.x[i].x(), p.x[i].y(), p.r[i], static_cast<double>(layer_of(p.id[i]))});
-  frame.flush();
+  frame.close();
 }
 
 void FlumeObserver::on_checkpoint(const dem::DemRun<2>&) { front_->flush(); }
@@ -164,24 +164,25 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
   const Grains g = grains(s);
   const auto profile = deposit_profile(geometry_, g, params_.measures.profile_bin);
   {
-    io::CsvSeries out(dir_ / "deposit_profile.csv",
-                      {"s_low", "s_high", "count", "thickness", "surface_x", "surface_y"}, false);
+    auto out =
+        io::CsvSeries::whole(dir_ / "deposit_profile.csv",
+                             {"s_low", "s_high", "count", "thickness", "surface_x", "surface_y"});
     for (const auto& b : profile) {
       out.row({b.s_low, b.s_high, static_cast<double>(b.count), b.thickness, b.surface.x(),
                b.surface.y()});
     }
-    out.flush();
+    out.close();
   }
   {
     // The surface as elevation over x (the top of the highest grain in each
     // 1 cm column): over the arc the deposit is thicker than R and a profile
     // along the path normals is ill-defined there; this one is not.
     const SlopeProfile columns = slope_profile(g, geometry_.barrier_end.x(), 0.01);
-    io::CsvSeries out(dir_ / "deposit_surface.csv", {"x", "y"}, false);
+    auto out = io::CsvSeries::whole(dir_ / "deposit_surface.csv", {"x", "y"});
     for (std::size_t k = 0; k < columns.x.size(); ++k) {
       if (columns.top[k] > 0) out.row({columns.x[k], columns.top[k]});
     }
-    out.flush();
+    out.close();
   }
   double mean_diameter = 0.0, weight = 0.0;
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
@@ -236,7 +237,7 @@ nlohmann::json FlumeObserver::finish(const dem::DemRun<2>& run) {
   j["forces"]["mean_over"] = "series_interval (from impulses)";
   j["forces"]["final_over"] = 0.1;
   j["forces"]["peak_step_over"] = "every step";
-  std::ofstream(dir_ / "summary.json") << j.dump(2) << "\n";
+  io::write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
   return j;
 }
 

@@ -1,9 +1,9 @@
 #include "talus/analysis/mpm_flume_observer.hpp"
 
 #include <cmath>
-#include <fstream>
 
 #include "talus/analysis/dam_break.hpp"
+#include "talus/io/archive.hpp"
 #include "talus/io/csv_reader.hpp"
 
 namespace talus::analysis {
@@ -48,20 +48,21 @@ nlohmann::json MpmFlumeObserver::finish(const mpm::Solver<2>& s) {
   const analysis::Grains g = grains(s);
   const auto profile = analysis::deposit_profile(geometry_, g, params_.measures.profile_bin);
   {
-    io::CsvSeries out(dir_ / "deposit_profile.csv",
-                      {"s_low", "s_high", "count", "thickness", "surface_x", "surface_y"}, false);
+    auto out =
+        io::CsvSeries::whole(dir_ / "deposit_profile.csv",
+                             {"s_low", "s_high", "count", "thickness", "surface_x", "surface_y"});
     for (const auto& b : profile)
       out.row({b.s_low, b.s_high, static_cast<double>(b.count), b.thickness, b.surface.x(),
                b.surface.y()});
-    out.flush();
+    out.close();
   }
   {
     // Elevation over x as for the DEM (well defined over the arc too).
     const auto columns = analysis::slope_profile(g, geometry_.barrier_end.x(), 0.01);
-    io::CsvSeries out(dir_ / "deposit_surface.csv", {"x", "y"}, false);
+    auto out = io::CsvSeries::whole(dir_ / "deposit_surface.csv", {"x", "y"});
     for (std::size_t k = 0; k < columns.x.size(); ++k)
       if (columns.top[k] > 0) out.row({columns.x[k], columns.top[k]});
-    out.flush();
+    out.close();
   }
   // Three point spacings: the MPM's analogue of the DEM's three grain diameters.
   const double tail_thickness =
@@ -103,7 +104,7 @@ nlohmann::json MpmFlumeObserver::finish(const mpm::Solver<2>& s) {
                   {"on_chute", last.on_chute},
                   {"points", s.particles.size()},
                   {"weight_per_m", mass * s.gravity().norm()}};
-  std::ofstream(dir_ / "summary.json") << j.dump(2) << "\n";
+  io::write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
   return j;
 }
 

@@ -46,7 +46,11 @@ std::string_view complete_lines(std::string_view content) {
 }  // namespace
 
 CsvSeries::CsvSeries(std::filesystem::path path, std::vector<std::string> columns, bool append)
-    : path_(std::move(path)), columns_(std::move(columns)) {
+    : CsvSeries(std::move(path), std::move(columns), append, {}) {}
+
+CsvSeries::CsvSeries(std::filesystem::path path, std::vector<std::string> columns, bool append,
+                     std::filesystem::path temp)
+    : path_(std::move(path)), temp_(std::move(temp)), columns_(std::move(columns)) {
   if (columns_.empty()) throw std::invalid_argument("CsvSeries: no columns");
   for (const auto& name : columns_) {
     if (name.find_first_of(",\"\r\n") != std::string::npos) {
@@ -72,11 +76,44 @@ CsvSeries::CsvSeries(std::filesystem::path path, std::vector<std::string> column
       continue_file = true;
     }
   }
-  file_.reset(std::fopen(path_.c_str(), continue_file ? "ab" : "wb"));
+  const auto& target = temp_.empty() ? path_ : temp_;
+  file_.reset(std::fopen(target.c_str(), continue_file ? "ab" : "wb"));
   if (!file_) fail("open");
   if (!continue_file &&
       std::fwrite(header.data(), 1, header.size(), file_.get()) != header.size()) {
     fail("header");
+  }
+}
+
+CsvSeries CsvSeries::whole(std::filesystem::path path, std::vector<std::string> columns) {
+  auto temp = path;
+  temp += ".tmp";
+  return CsvSeries(std::move(path), std::move(columns), false, std::move(temp));
+}
+
+CsvSeries::~CsvSeries() {
+  if (file_ && !temp_.empty()) {
+    file_.reset();
+    std::error_code ignored;
+    std::filesystem::remove(temp_, ignored);
+  }
+}
+
+void CsvSeries::close() {
+  if (!file_) return;
+  flush();  // on failure the destructor removes a temporary file
+  std::error_code error;
+  if (std::fclose(file_.release()) != 0) {
+    const int close_error = errno;
+    if (!temp_.empty()) std::filesystem::remove(temp_, error);
+    errno = close_error;
+    fail("close");
+  }
+  if (temp_.empty()) return;
+  std::filesystem::rename(temp_, path_, error);
+  if (error) {
+    std::filesystem::remove(temp_, error);
+    throw RunError(fmt::format("cannot write '{}' (rename): {}", path_.string(), error.message()));
   }
 }
 

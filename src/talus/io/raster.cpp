@@ -8,11 +8,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <mutex>
 
 #include "talus/core/error.hpp"
+#include "talus/io/archive.hpp"
 
 namespace talus::io {
 namespace {
@@ -128,6 +128,9 @@ Raster read_raster(const std::string& path) {
   return r;
 }
 
+// Both writers produce the whole file under a temporary name and rename it
+// into place: a full disk leaves the old file or none, never a cut one, and
+// the error names the file.
 void write_geotiff(const std::string& path, const Raster& r) {
   register_gdal();
   if (r.values.size() != r.nx * r.ny || r.nx == 0 || r.ny == 0)
@@ -135,12 +138,18 @@ void write_geotiff(const std::string& path, const Raster& r) {
                                r.nx, r.ny));
   GDALDriverH driver = GDALGetDriverByName("GTiff");
   if (!driver) throw RunError("GDAL has no GeoTIFF driver");
+  const std::string temp = path + ".tmp";
+  auto fail = [&] {
+    const std::string why = last_gdal_error();
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw RunError(fmt::format("cannot write '{}': {}", path, why));
+  };
   CPLErrorReset();
   char* options[] = {const_cast<char*>("COMPRESS=DEFLATE"), nullptr};
-  GDALDatasetH ds = GDALCreate(driver, path.c_str(), static_cast<int>(r.nx), static_cast<int>(r.ny),
+  GDALDatasetH ds = GDALCreate(driver, temp.c_str(), static_cast<int>(r.nx), static_cast<int>(r.ny),
                                1, GDT_Float64, options);
-  if (!ds)
-    throw RunError(fmt::format("{}: cannot write the GeoTIFF ({})", path, last_gdal_error()));
+  if (!ds) fail();
   double gt[6] = {r.x_west, r.dx, 0.0, r.y_north, 0.0, -r.dy};
   GDALSetGeoTransform(ds, gt);
   if (!r.projection.empty()) GDALSetProjection(ds, r.projection.c_str());
@@ -150,9 +159,16 @@ void write_geotiff(const std::string& path, const Raster& r) {
       GDALRasterIO(band, GF_Write, 0, 0, static_cast<int>(r.nx), static_cast<int>(r.ny),
                    const_cast<double*>(r.values.data()), static_cast<int>(r.nx),
                    static_cast<int>(r.ny), GDT_Float64, 0, 0);
+  // The data reach the file when it is closed; a write that fails there
+  // leaves its error behind.
   GDALClose(ds);
-  if (err != CE_None)
-    throw RunError(fmt::format("{}: cannot write the GeoTIFF ({})", path, last_gdal_error()));
+  if (err != CE_None || CPLGetLastErrorType() >= CE_Failure) fail();
+  std::error_code error;
+  std::filesystem::rename(temp, path, error);
+  if (error) {
+    std::filesystem::remove(temp, error);
+    throw RunError(fmt::format("cannot write '{}' (rename): {}", path, error.message()));
+  }
 }
 
 void write_npy(const std::string& path, const Raster& r) {
@@ -162,15 +178,22 @@ void write_npy(const std::string& path, const Raster& r) {
   const std::size_t total = 10 + header.size() + 1;
   header.append((64 - total % 64) % 64, ' ');
   header.push_back('\n');
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw RunError(fmt::format("{}: cannot write the .npy file", path));
-  const unsigned short len = static_cast<unsigned short>(header.size());
-  out.write("\x93NUMPY\x01\x00", 8);
-  const char len_bytes[2] = {static_cast<char>(len & 0xff), static_cast<char>(len >> 8)};
-  out.write(len_bytes, 2);
-  out.write(header.data(), static_cast<std::streamsize>(header.size()));
-  out.write(reinterpret_cast<const char*>(r.values.data()),
-            static_cast<std::streamsize>(r.values.size() * sizeof(double)));
+  const auto len = static_cast<unsigned short>(header.size());
+  const char preamble[10] = {'\x93',
+                             'N',
+                             'U',
+                             'M',
+                             'P',
+                             'Y',
+                             '\x01',
+                             '\x00',
+                             static_cast<char>(len & 0xff),
+                             static_cast<char>(len >> 8)};
+  const std::string_view pieces[] = {
+      std::string_view(preamble, sizeof preamble), header,
+      std::string_view(reinterpret_cast<const char*>(r.values.data()),
+                       r.values.size() * sizeof(double))};
+  write_file_atomically(path, pieces);
 }
 
 bool same_grid(const Raster& a, const Raster& b) {

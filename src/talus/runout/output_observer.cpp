@@ -50,7 +50,7 @@ void DanOutputs::on_snapshot(const DanModel& m) {
 
 void DanOutputs::write_path(const RunoutPath& path) {
   // 5 mm along the path: smooth enough for a plot of the bed, small on disk.
-  io::CsvSeries out(dir_ / "path.csv", {"s", "x", "y", "width"}, false);
+  auto out = io::CsvSeries::whole(dir_ / "path.csv", {"s", "x", "y", "width"});
   const double s0 = path.s_begin(), s1 = path.s_end();
   const auto n = static_cast<std::size_t>(std::ceil((s1 - s0) / 0.005));
   for (std::size_t k = 0; k <= n; ++k) {
@@ -58,21 +58,21 @@ void DanOutputs::write_path(const RunoutPath& path) {
     const Vec2 p = path.point(s);
     out.row({s, p.x(), p.y(), path.width(s)});
   }
-  out.flush();
+  out.close();
   path_written_ = true;
 }
 
 void DanOutputs::flush() { series_->flush(); }
 
 void DanOutputs::write_results(const RunoutResults& r) const {
-  io::CsvSeries deposit(dir_ / "deposit.csv",
-                        {"s", "x_bed", "y_bed", "depth", "x_surface", "y_surface"}, false);
+  auto deposit = io::CsvSeries::whole(dir_ / "deposit.csv",
+                                      {"s", "x_bed", "y_bed", "depth", "x_surface", "y_surface"});
   for (const auto& p : r.deposit)
     deposit.row({p.s, p.x_bed, p.y_bed, p.depth, p.x_surface, p.y_surface});
-  deposit.flush();
-  io::CsvSeries front(dir_ / "front.csv", {"time", "s", "x", "y"}, false);
+  deposit.close();
+  auto front = io::CsvSeries::whole(dir_ / "front.csv", {"time", "s", "x", "y"});
   for (const auto& f : r.front) front.row({f.time, f.s, f.x, f.y});
-  front.flush();
+  front.close();
   series_->flush();
 }
 

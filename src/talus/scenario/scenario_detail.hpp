@@ -102,14 +102,18 @@ double required_number_in(TomlReader& r, std::string_view key, Interval range);
 // A point or direction; in 2D runs it is [x, y] (a third number must be 0).
 Vec3 required_point(TomlReader& r, std::string_view key, const DemContext& ctx);
 Vec3 point_or(TomlReader& r, std::string_view key, const DemContext& ctx, const Vec3& fallback);
-// A non-zero vector, normalised.
+// v / |v|, or v itself when it is unit up to round-off: reading a resolved
+// scenario back gives the same vector (normalising twice may not).
+Vec3 unit(const Vec3& v);
+// A non-zero vector, normalised (unit above).
 Vec3 unit_vector_or(TomlReader& r, std::string_view key, const DemContext& ctx,
                     const Vec3& fallback);
 // An angular velocity in rad/s: in 2D a number (about z) or [0, 0, w].
 Vec3 spin_or_zero(TomlReader& r, std::string_view key, const DemContext& ctx);
 // A box {min = [..], max = [..]} with min < max in every used coordinate.
 void read_box(TomlReader& r, std::string_view key, const DemContext& ctx, Vec3& min, Vec3& max);
-// A file name, relative to the scenario's folder unless absolute; must exist.
+// A file name, relative to the folder of the file it is written in (the
+// scenario or a base it extends) unless absolute; must exist.
 std::string required_file(TomlReader& r, std::string_view key, const DemContext& ctx);
 // Fails unless name is one of the [[materials]].
 void check_material(const TomlReader& r, std::string_view key, const std::string& name,

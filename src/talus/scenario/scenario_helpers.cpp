@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
@@ -71,11 +72,18 @@ Vec3 point_or(TomlReader& r, std::string_view key, const DemContext& ctx, const 
   return checked_point(r, key, ctx, r.vec3(key, fallback));
 }
 
+Vec3 unit(const Vec3& v) {
+  // Normalising twice may move the last bit; a vector that is unit up to
+  // round-off is kept as written.
+  const double eps = std::numeric_limits<double>::epsilon();
+  return std::abs(v.squaredNorm() - 1.0) <= 8.0 * eps ? v : v.normalized();
+}
+
 Vec3 unit_vector_or(TomlReader& r, std::string_view key, const DemContext& ctx,
                     const Vec3& fallback) {
   const Vec3 v = point_or(r, key, ctx, fallback);
   r.expect(v.norm() > 0.0, key, "a non-zero vector");
-  return v.normalized();
+  return unit(v);
 }
 
 Vec3 spin_or_zero(TomlReader& r, std::string_view key, const DemContext& ctx) {
@@ -106,10 +114,15 @@ void read_box(TomlReader& r, std::string_view key, const DemContext& ctx, Vec3& 
 std::string required_file(TomlReader& r, std::string_view key, const DemContext& ctx) {
   const std::filesystem::path given = r.required_string(key);
   r.expect(!given.empty(), key, "a file name");
-  const std::filesystem::path path =
-      std::filesystem::absolute(given.is_absolute() ? given : ctx.folder / given)
-          .lexically_normal();
   namespace fs = std::filesystem;
+  // Relative to the folder of the file the key was written in: a base
+  // scenario (`extends`) names its files from where it lies. A --set value
+  // (no file of its own) is relative to the scenario's folder.
+  const toml::node* node = r.table().get(key);
+  const fs::path written_in = fs::path(r.file_of(node)).parent_path();
+  const fs::path folder = node && node->source().path ? written_in : ctx.folder;
+  const fs::path path =
+      fs::absolute(given.is_absolute() ? given : folder / given).lexically_normal();
   std::error_code ec;
   const fs::file_type type = fs::status(path, ec).type();
   if (type == fs::file_type::not_found) r.fail(key, fmt::format("no such file: {}", path.string()));

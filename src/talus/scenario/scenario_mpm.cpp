@@ -215,7 +215,7 @@ mpm::RigidBodyParams read_rigid_body(TomlReader& r, const mpm::MpmScenario& s,
   if (ctx.dimension == 3) {
     b.axis = r.vec3("axis", Vec3::UnitZ());
     r.expect(b.axis.norm() > 0.0, "axis", "a non-zero vector [x, y, z]");
-    b.axis.normalize();
+    b.axis = detail::unit(b.axis);
   } else {
     r.reject({"axis"}, "is only used in 3D (a 2D body turns about z)");
   }

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include "talus/core/error.hpp"
@@ -12,6 +11,7 @@
 #include "talus/dem/gpu_support.hpp"
 #include "talus/dem/health.hpp"
 #include "talus/dem_gpu/backend.hpp"
+#include "talus/io/archive.hpp"
 #include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 
@@ -243,7 +243,7 @@ Method dem_method() {
     if (!ctx.resume) {
       ctx.prepare();
       // The resolved scenario makes the run reproducible and resumable.
-      std::ofstream(ctx.out / "scenario.toml") << io::scenario_to_toml(sc);
+      io::write_file_atomically(ctx.out / "scenario.toml", io::scenario_to_toml(sc));
     }
     return sc.run.dimension == 2 ? create_dem<2>(sc, ctx) : create_dem<3>(sc, ctx);
   };

@@ -11,9 +11,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 
 #include "talus/core/error.hpp"
+#include "talus/io/archive.hpp"
 #include "talus/mpm/checkpoint.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/metrics.hpp"
@@ -259,7 +259,7 @@ Method mpm_method() {
     if (!ctx.resume) {
       ctx.prepare();
       const auto path = ctx.out / "scenario.toml";
-      std::ofstream(path) << io::mpm_scenario_to_toml(sc);
+      io::write_file_atomically(path, io::mpm_scenario_to_toml(sc));
       // The run uses the resolved file it wrote, as a resume does: an angle
       // through degrees and back may differ in the last bit, and a resumed run
       // must start from the very same numbers to end in the same state.
