@@ -3,7 +3,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -11,7 +10,7 @@
 #include <string>
 #include <type_traits>
 
-#include "talus/core/adaptive_team.hpp"
+#include "talus/core/team_segments.hpp"
 #include "talus/dem/chunk_partition.hpp"
 #include "talus/dem/contact/laws.hpp"
 #include "talus/dem/contact/rolling.hpp"
@@ -92,21 +91,12 @@ class Stepper final : public StepperBase<D> {
   // chunks make the results the same either way.
   void advance(int64_t steps) override {
     error_ = nullptr;
-    using Clock = std::chrono::steady_clock;
     for (int64_t done = 0; done < steps && !error_;) {
-      const int team = adaptive_.team();
-      const int64_t segment =
-          s_.threads > 1 ? std::min(steps - done, adaptive_.segment_steps()) : steps - done;
-      // libgomp's idle threads spin for milliseconds after a parallel region,
-      // on the core the one working thread or the competing process needs:
-      // going alone, release them (they are made anew for the next team).
-      if (team == 1 && last_team_ > 1) omp_pause_resource_all(omp_pause_soft);
-      last_team_ = team;
-      const auto start = Clock::now();
+      const int64_t segment = segments_.begin(steps - done);
       sleeps_.store(0, std::memory_order_relaxed);
-      run_segment(team, segment);
-      adaptive_.record(team, segment, std::chrono::duration<double>(Clock::now() - start).count(),
-                       AdaptiveTeam::sleepy(sleeps_.load(std::memory_order_relaxed), segment));
+      run_segment(segments_.team(), segment);
+      segments_.end(segment,
+                    AdaptiveTeam::sleepy(sleeps_.load(std::memory_order_relaxed), segment));
       done += segment;
     }
     if (step_open_) close_step();
@@ -683,9 +673,8 @@ class Stepper final : public StepperBase<D> {
   ChunkPartition<D> partition_;
   int team_ = 1;                                   // threads in the current parallel region
   TeamBarrier barrier_;                            // the step's one barrier (core/team_sync.hpp)
-  AdaptiveTeam adaptive_{s_.threads};              // the team or one thread, segment by segment
+  TeamSegments segments_{s_.threads};              // the team or one thread, segment by segment
   std::atomic<int64_t> sleeps_{0};                 // waits that slept in this segment
-  int last_team_ = 0;                              // the team of the last segment
   std::vector<double> moved_;                      // each thread's largest squared drift this step
   bool rebuild_now_ = false, team_tasks_ = false;  // decided by serial_part
   int64_t force_pass_ = 0;                         // counts the force computations

@@ -18,7 +18,8 @@ Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
     : scenario_(std::move(scenario)),
       solver_(runout::build_fv2d(scenario_)),
       outputs_(std::make_unique<Observer>()),
-      threads_(threads) {}
+      threads_(threads),
+      segments_(threads) {}
 
 namespace {
 
@@ -67,18 +68,32 @@ void Fv2dSimulation::start(bool fresh) {
   initial_volume_ = solver_.volume();
 }
 
+// With several threads the steps run in segments with the whole team or one
+// thread alone, whichever is faster now (core/team_segments.hpp). Every loop
+// of the solver is per cell, or a max, so the bits are the same either way.
 void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_steps) {
   const double end = end_time();
-  for (std::int64_t taken = 0; taken < max_steps && !stopped_; ++taken) {
-    const double t = solver_.state().time;
-    if (t >= target - tolerance || t >= end - tolerance) break;
-    const double dt =
-        std::min({solver_.stable_time_step(), scenario_.grid.max_time_step, end - t, target - t});
-    solver_.step(dt);
-    last_dt_ = dt;
-    ++steps_;
-    maxima_.observe(solver_);
-    stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
+  TeamSize size(threads_);
+  for (std::int64_t taken = 0; taken < max_steps && !stopped_;) {
+    const std::int64_t segment = segments_.begin(max_steps - taken);
+    size.set(segments_.team());
+    std::int64_t stepped = 0;
+    bool reached = false;
+    for (; stepped < segment && !stopped_; ++stepped) {
+      const double t = solver_.state().time;
+      reached = t >= target - tolerance || t >= end - tolerance;
+      if (reached) break;
+      const double dt =
+          std::min({solver_.stable_time_step(), scenario_.grid.max_time_step, end - t, target - t});
+      solver_.step(dt);
+      last_dt_ = dt;
+      ++steps_;
+      maxima_.observe(solver_);
+      stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
+    }
+    taken += stepped;
+    segments_.end(stepped);
+    if (reached || stepped == 0) break;
   }
 }
 

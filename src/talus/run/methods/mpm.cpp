@@ -1,16 +1,13 @@
 // The MPM method on the run loop: one CFL step at a time, landing exactly on
 // the end time; the energy watch of mpm/health.hpp every tenth step. With
 // several threads the steps run in segments with the whole team or one thread
-// alone, whichever is faster now (core/adaptive_team.hpp): the solver's chunks
+// alone, whichever is faster now (core/team_segments.hpp): the solver's chunks
 // follow the thread count asked for, so the bits are the same either way.
 #include "talus/run/methods/mpm.hpp"
 
 #include <fmt/core.h>
-#include <omp.h>
-#include <sys/resource.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "talus/core/error.hpp"
 #include "talus/io/archive.hpp"
@@ -27,26 +24,6 @@ namespace talus::run {
 
 namespace {
 
-// Times the kernel took a core from this process's threads so far.
-std::int64_t involuntary_switches() {
-  rusage ru{};
-  getrusage(RUSAGE_SELF, &ru);
-  return ru.ru_nivcsw;
-}
-
-// The team size of the parallel regions (OpenMP's default) while it lives.
-class TeamSize {
- public:
-  explicit TeamSize(int threads) : threads_(threads) {}
-  void set(int team) {
-    if (threads_ > 1) omp_set_num_threads(team);
-  }
-  ~TeamSize() { set(threads_); }
-
- private:
-  int threads_;
-};
-
 std::vector<double> initial_cohesions(const mpm::MpmScenario& sc) {
   std::vector<double> c0;
   for (const auto& m : sc.materials) c0.push_back(mpm::initial_cohesion(m));
@@ -61,7 +38,7 @@ MpmSimulation<D>::MpmSimulation(mpm::MpmScenario scenario, mpm::Solver<D> solver
     : scenario_(std::move(scenario)),
       solver_(std::move(solver)),
       threads_(threads),
-      adaptive_(threads) {
+      segments_(threads) {
   if (threads_ > 1) solver_.set_chunks(threads_);
   if (out.empty()) {
     files_observer_ = std::make_unique<Observer>();
@@ -90,19 +67,12 @@ void MpmSimulation<D>::start(bool /*fresh*/) {
 
 template <int D>
 void MpmSimulation<D>::advance(double target, double tolerance, std::int64_t max_steps) {
-  using Clock = std::chrono::steady_clock;
   auto& s = solver_;
   const double end = end_time();
   TeamSize size(threads_);
   for (std::int64_t taken = 0; taken < max_steps;) {
-    const int team = adaptive_.team();
-    // libgomp's idle threads spin for milliseconds: going alone, release them.
-    if (threads_ > 1 && team == 1 && last_team_ > 1) omp_pause_resource_all(omp_pause_soft);
-    last_team_ = team;
-    size.set(team);
-    const std::int64_t segment = std::min(max_steps - taken, adaptive_.segment_steps());
-    const auto start = Clock::now();
-    const std::int64_t switches = involuntary_switches();
+    const std::int64_t segment = segments_.begin(max_steps - taken);
+    size.set(segments_.team());
     std::int64_t stepped = 0;
     bool reached = false;
     for (; stepped < segment; ++stepped) {
@@ -117,9 +87,7 @@ void MpmSimulation<D>::advance(double target, double tolerance, std::int64_t max
       if (blowup_ > 0.0 && (s.steps % 10 == 0 || last)) mpm::check_energy(s, budget_, blowup_);
     }
     taken += stepped;
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    adaptive_.record(team, stepped, seconds,
-                     AdaptiveTeam::preempted(involuntary_switches() - switches, seconds));
+    segments_.end(stepped);
     if (reached || stepped == 0) break;
   }
 }

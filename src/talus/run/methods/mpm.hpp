@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "talus/core/adaptive_team.hpp"
+#include "talus/core/team_segments.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/output_observer.hpp"
 #include "talus/mpm/scenario.hpp"
@@ -44,8 +44,7 @@ class MpmSimulation : public Simulation {
   mpm::MpmScenario scenario_;
   mpm::Solver<D> solver_;
   int threads_;
-  AdaptiveTeam adaptive_;  // the team or one thread, segment by segment
-  int last_team_ = 0;
+  TeamSegments segments_;  // the team or one thread, segment by segment
   std::unique_ptr<mpm::MpmOutputs<D>> files_;
   std::unique_ptr<Observer> files_observer_;
   double blowup_ = 0.0;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "talus/core/team_segments.hpp"
 #include "talus/run/simulation.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/grid/fv2d_maxima.hpp"
@@ -89,6 +90,7 @@ class Fv2dSimulation : public Simulation {
   std::unique_ptr<Observer> outputs_;
   std::filesystem::path checkpoint_;  // empty: no files
   int threads_;
+  TeamSegments segments_;  // the team or one thread, segment by segment
   double initial_volume_ = 0.0;
   std::int64_t steps_ = 0;
   double last_dt_ = 0.0;
