@@ -34,8 +34,11 @@ assert a == b, {k: (a[k], b.get(k)) for k in a if a[k] != b.get(k)}
 PY
 }
 same_metrics "$tmp/full" "$tmp/killed" || { echo "FAIL: summary metrics differ"; exit 1; }
+# The floor vibrates: the work it does on the grains (walls[].work_J, part of
+# the energy check's budget) must be carried across the resume too.
 c2=(run "$src/scenarios/collapse_2d.toml" --quiet --set "run.duration=0.4"
-    --set "output.checkpoint_interval=0.2" --set "output.snapshots=false")
+    --set "output.checkpoint_interval=0.2" --set "output.snapshots=false"
+    --set "walls.0.motion={amplitude=0.001, frequency=20, direction=[0, 1]}")
 "$talus" "${c2[@]}" --out "$tmp/full2d" || { echo "FAIL: uninterrupted 2D run"; exit 1; }
 "$talus" "${c2[@]}" --out "$tmp/killed2d" & pid=$!
 wait_for_checkpoint "$tmp/killed2d" $pid
@@ -43,4 +46,9 @@ kill -0 $pid 2>/dev/null || { echo "FAIL: the 2D run finished before it could be
 kill -9 $pid; wait $pid 2>/dev/null
 "$talus" run --resume "$tmp/killed2d" --quiet || { echo "FAIL: 2D resume"; exit 1; }
 same_metrics "$tmp/full2d" "$tmp/killed2d" || { echo "FAIL: 2D summary peaks differ after resume"; exit 1; }
-echo "resume: 6 passed, 0 failed"
+/usr/bin/python3 - "$tmp/killed2d/summary.json" <<'PY' || { echo "FAIL: the floor did no work"; exit 1; }
+import json, sys
+floor = next(w for w in json.load(open(sys.argv[1]))["metrics"]["walls"] if w["name"] == "floor")
+assert floor["work_J"] != 0.0, floor
+PY
+echo "resume: 7 passed, 0 failed"
