@@ -26,6 +26,22 @@ wait_for_checkpoint() {  # output folder, pid of the run
   done
   sleep 0.2
 }
+# Runs a scenario to its end into $tmp/NAME-full, and again into $tmp/NAME,
+# killed with SIGKILL after its first checkpoint and resumed (a check each).
+killed_and_resumed() {  # name, scenario
+  local name=$1 scenario=$2
+  "$talus" run "$scenario" --quiet -j 1 --out "$tmp/$name-full" >"$tmp/out" 2>&1; rc=$?
+  check_rc "$name: uninterrupted run" "$tmp/out"
+  "$talus" run "$scenario" --quiet -j 1 --out "$tmp/$name" & pid=$!
+  wait_for_checkpoint "$tmp/$name" $pid
+  check "$name: still going when killed (else make it longer)" 'kill -0 $pid 2>/dev/null'
+  kill -9 $pid; wait $pid 2>/dev/null
+  check "$name: a checkpoint was written" '[ -f "$tmp/$name/checkpoint.bin" ]'
+  check "$name: the killed run had not finished" '[ ! -f "$tmp/$name/summary.json" ]'
+  "$talus" run --resume "$tmp/$name" --quiet -j 1 >"$tmp/out" 2>&1; rc=$?
+  check_rc "$name: resume exits 0" "$tmp/out"
+}
+
 # Last line of a script: the tally, and its exit status.
 finish() {  # name of the script's part
   echo "$1: $pass passed, $fail failed"

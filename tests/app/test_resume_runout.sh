@@ -6,20 +6,6 @@
 # metrics (peaks, arrival, run-up, released volume). Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
 
-killed_and_resumed() {  # name, scenario
-  local name=$1 scenario=$2
-  "$talus" run "$scenario" --quiet -j 1 --out "$tmp/$name-full" >"$tmp/out" 2>&1; rc=$?
-  check_rc "$name: uninterrupted run" "$tmp/out"
-  "$talus" run "$scenario" --quiet -j 1 --out "$tmp/$name" & pid=$!
-  wait_for_checkpoint "$tmp/$name" $pid
-  check "$name: still going when killed (else make it longer)" 'kill -0 $pid 2>/dev/null'
-  kill -9 $pid; wait $pid 2>/dev/null
-  check "$name: a checkpoint was written" '[ -f "$tmp/$name/checkpoint.bin" ]'
-  check "$name: the killed run had not finished" '[ ! -f "$tmp/$name/summary.json" ]'
-  "$talus" run --resume "$tmp/$name" --quiet -j 1 >"$tmp/out" 2>&1; rc=$?
-  check_rc "$name: resume exits 0" "$tmp/out"
-}
-
 same() {  # name, file in both run folders
   local run=$1 file=$2
   check "$run: $file identical" \
