@@ -103,6 +103,17 @@ with tempfile.TemporaryDirectory() as tmp:
     # bed-normal.
     check("deposit area", abs(np.count_nonzero(arrays["deposit"] > 0.01) * dx * dy - m["deposit_area_m2"]) < 1e-6)
     check("affected area", abs(np.count_nonzero(arrays["max_height"] > 0.01) * dx * dy - m["affected_area_m2"]) < 1e-6)
+    # Arrival time: when a cell's bed-normal height first exceeded the same
+    # 1 cm, from the same observations as the maxima; NaN (the GeoTIFF's
+    # no-data value) where it never did, 0 in the release.
+    check("arrival_time.tif written", os.path.getsize(os.path.join(out, "arrival_time.tif")) > 0)
+    arrival = np.load(os.path.join(out, "arrival_time.npy"))
+    check("arrival_time.npy shape", arrival.shape == shape)
+    check("arrival finite exactly where the flow exceeded 1 cm",
+          bool(np.array_equal(np.isfinite(arrival), arrays["max_height"] > 0.01)))
+    reached = arrival[np.isfinite(arrival)]
+    check("arrival from 0 (the release) to the end", reached.min() == 0.0 and reached.max() <= 40.0)
+    check("arrival later than the start somewhere", bool(np.any(reached > 1.0)))
     plots("plot_runout2d.py", out)
 
 check.finish("runout run")

@@ -88,7 +88,7 @@ void save_checkpoint(const Fv2dSolver& solver, const Fv2dMaxima& maxima, double 
   const auto& s = solver.state();
   w.put(s.h), w.put(s.hu), w.put(s.hv), w.put(s.time);
   w.put(solver.earth_pressure()), w.put(solver.outflow_volume());
-  w.put(maxima.height), w.put(maxima.speed), w.put(maxima.pressure);
+  w.put(maxima.height), w.put(maxima.speed), w.put(maxima.pressure), w.put(maxima.arrival);
   w.put(maxima.peak_speed), w.put(maxima.peak_height);
   w.put(released_volume);
   w.save(path);
@@ -105,12 +105,13 @@ StepCount load_checkpoint(Fv2dSolver& solver, Fv2dMaxima& maxima, double& releas
   double outflow = 0.0;
   r.get(k), r.get(outflow);
   Fv2dMaxima m;
-  r.get(m.height), r.get(m.speed), r.get(m.pressure);
+  r.get(m.height), r.get(m.speed), r.get(m.pressure), r.get(m.arrival);
   r.get(m.peak_speed), r.get(m.peak_height);
   r.get(released_volume);
   check_end(r, where);
   const std::size_t cells = solver.terrain().shape().cells();
-  if (m.height.size() != cells || m.speed.size() != cells || m.pressure.size() != cells)
+  if (m.height.size() != cells || m.speed.size() != cells || m.pressure.size() != cells ||
+      m.arrival.size() != cells)
     throw InputError(where + "the checkpoint's grid is not this scenario's");
   try {
     solver.restore(s, std::move(k), outflow);

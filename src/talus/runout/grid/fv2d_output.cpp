@@ -1,5 +1,7 @@
 #include "talus/runout/grid/fv2d_output.hpp"
 
+#include <limits>
+
 #include "talus/io/raster.hpp"
 
 namespace talus::runout {
@@ -43,6 +45,9 @@ void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const 
   write("max_pressure", m.pressure);
   write("deposit", deposit);
   write("elevation", s.terrain().elevation());
+  // Cells the flow never reached hold NaN, declared as the no-data value.
+  r.nodata = std::numeric_limits<double>::quiet_NaN();
+  write("arrival_time", m.arrival);
   series_->flush();
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Files of a 2D runout run: series.csv during the run, and at the end the
 // result rasters as GeoTIFF on the terrain's grid (max_height, max_speed,
-// max_pressure, deposit, plus the bed elevation for hillshades), each also as
-// .npy for the plot script (plots/plot_runout2d.py).
+// max_pressure, arrival_time, deposit, plus the bed elevation for hillshades),
+// each also as .npy for the plot script (plots/plot_runout2d.py).
 #include <filesystem>
 #include <functional>
 #include <memory>
