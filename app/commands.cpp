@@ -55,6 +55,7 @@ int run_command(const RunOptions& opt) {
   req.log_to_stderr = !opt.quiet && !terminal;
   req.log_seconds = opt.log_seconds;
   const auto result = run::execute(req);
+  for (const auto& text : result.warnings) fmt::print(stderr, "talus: warning: {}\n", text);
   if (!opt.quiet) {
     fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", result.stats.steps,
                result.stats.wall_seconds, result.out.string());

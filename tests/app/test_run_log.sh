@@ -21,9 +21,10 @@ check "stderr of a batch job carries the same lines" '[ "$(grep -c " t = " "$tmp
 check "--quiet keeps stderr empty but still writes log.txt" '[ ! -s "$tmp/err" ] && grep -q completed "$tmp/quiet/log.txt"'
 # Every method ends with its headline (DAN, fv2d, MPM; the flume adds its own).
 "$talus" run "$src/scenarios/runout_flume_A.toml" --out "$tmp/dan" --quiet --set run.duration=0.5
-check "a DAN run's headline: front, speed, depth" 'tail -1 "$tmp/dan/log.txt" | grep -Eq "dan: front at s = .* m; max speed .* m/s, max depth .* m"'
+check "a DAN run's headline: front, speed, depth" 'tail -2 "$tmp/dan/log.txt" | grep -Eq "dan: front at s = .* m; max speed .* m/s, max depth .* m"'
+check "... and, cut short, the warning that it still moves" 'tail -1 "$tmp/dan/log.txt" | grep -q "warning: the mass is still moving at the end"'
 "$talus" run "$src/scenarios/runout_terrain_2d.toml" --out "$tmp/fv2d" --quiet --set run.duration=2
-check "an fv2d run's headline: volume, areas, maxima" 'tail -1 "$tmp/fv2d/log.txt" | grep -Eq "fv2d: .* m\^3 released, .* m\^2 affected, .* deposit .*; max height .* m, max speed .* m/s, max pressure .* kPa"'
+check "an fv2d run's headline: volume, areas, maxima" 'tail -2 "$tmp/fv2d/log.txt" | grep -Eq "fv2d: .* m\^3 released, .* m\^2 affected, .* deposit .*; max height .* m, max speed .* m/s, max pressure .* kPa"'
 "$talus" run "$src/scenarios/mpm_tilting_plate.toml" --out "$tmp/mpm" --quiet --set run.duration=0.05
 check "an MPM run's headline: front, top, energy" 'tail -1 "$tmp/mpm/log.txt" | grep -Eq "mpm: 200 points, front advanced .* m, top changed .* m; peak kinetic energy .* J at t = .* s"'
 finish run_log

@@ -114,6 +114,9 @@ with tempfile.TemporaryDirectory() as tmp:
     reached = arrival[np.isfinite(arrival)]
     check("arrival from 0 (the release) to the end", reached.min() == 0.0 and reached.max() <= 40.0)
     check("arrival later than the start somewhere", bool(np.any(reached > 1.0)))
+    # Cut at 40 s the avalanche still moves: the summary says so.
+    check("fv2d warns that the mass still moves", not m["at_rest"] and
+          any("still moving at the end" in w for w in s.get("warnings", [])))
     plots("plot_runout2d.py", out)
 
 check.finish("runout run")

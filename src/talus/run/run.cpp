@@ -168,6 +168,8 @@ RunResult execute(const RunRequest& req) {
     if (!line.empty()) result.headline.push_back(line);
   }
   for (const auto& text : result.headline) log.headline(text);
+  result.warnings = summary.report.warnings;
+  for (const auto& text : result.warnings) log.headline("warning: " + text);
   return result;
 }
 

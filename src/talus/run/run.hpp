@@ -29,6 +29,7 @@ struct RunResult {
   std::filesystem::path out;
   RunStats stats;
   std::vector<std::string> headline;  // key results, one line each
+  std::vector<std::string> warnings;  // the method's (MethodReport::warnings)
 };
 
 // Runs a scenario to its end. InputError before anything runs; RunError when

@@ -29,6 +29,9 @@ struct MethodReport {
   nlohmann::json metrics;   // the headline results
   // One line of the key results, printed when the run ends (stderr and log.txt).
   std::string headline;
+  // What the user must know of a completed run (material still moving at
+  // the end): summary.json's "warnings", stderr and log.txt.
+  std::vector<std::string> warnings;
   std::string rate_key;  // "particle_steps_per_s", ...
   double items = 0.0;    // particles, points, blocks or cells advanced per step
   nlohmann::json run_extra = nlohmann::json::object();  // more counts for "run"

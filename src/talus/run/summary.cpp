@@ -24,6 +24,7 @@ nlohmann::json summary_json(const SummaryInput& in) {
   if (in.estimated_steps >= 0.0) j["run"]["estimated_steps"] = in.estimated_steps;
   for (const auto& [k, v] : r.run_extra.items()) j["run"][k] = v;
   j["metrics"] = r.metrics;
+  if (!r.warnings.empty()) j["warnings"] = r.warnings;
   for (const auto& [name, part] : in.experiments.items()) j[name] = part;
   if (!in.error.empty()) j["error"] = in.error;
   return j;

@@ -151,6 +151,8 @@ MethodReport DanSimulation::report() const {
                                 r.runup_max.distance_on_barrier, r.runup_max.elevation);
   rep.headline += std::isfinite(r.rest_time) ? fmt::format("; at rest at t = {:.4g} s", r.rest_time)
                                              : std::string("; still moving at the end");
+  if (!std::isfinite(r.rest_time) && !stopped_)
+    rep.warnings.push_back(still_moving(time(), model.max_speed()));
   return rep;
 }
 

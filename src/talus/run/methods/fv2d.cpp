@@ -151,6 +151,7 @@ MethodReport Fv2dSimulation::report() const {
       solver_.at_rest() ? "at rest" : "still moving at the end");
   if (solver_.outflow_volume() > 0.0)
     r.headline += fmt::format("; {:.4g} m^3 left the grid", solver_.outflow_volume());
+  if (!solver_.at_rest()) r.warnings.push_back(still_moving(time(), solver_.max_speed()));
   return r;
 }
 

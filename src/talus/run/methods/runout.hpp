@@ -97,6 +97,10 @@ class Fv2dSimulation : public Simulation {
   bool stopped_ = false;
 };
 
+// The warning of a runout run that ends before its mass has come to rest: its
+// deposit and run-out are not final.
+std::string still_moving(double time, double max_speed);
+
 // Writes the resolved scenario into out/scenario.toml and reads it back: a
 // fresh run starts from the numbers a resumed one will read (an angle through
 // degrees and back may differ in its last bit).
