@@ -117,7 +117,7 @@ RigidBody<D> build_rigid_body(const RigidBodyParams& p, double cell_size) {
 }
 
 double resolved_k0(const BodyParams& body, const MaterialParams& m) {
-  if (body.k0 > 0.0) return body.k0;
+  if (body.k0 >= 0.0) return body.k0;
   return m.model == NewtonianFluid::name ? 1.0 : m.poisson_ratio / (1.0 - m.poisson_ratio);
 }
 

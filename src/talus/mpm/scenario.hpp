@@ -31,10 +31,10 @@ struct BodyParams {
   int per_cell = 2;
   Vec3 velocity = Vec3::Zero();
   // Geostatic initial stress: vertical stress rho g depth below the box top,
-  // horizontal k0 times it (k0 <= 0: nu / (1 - nu), the elastic value of
-  // gravity loading between rollers).
+  // horizontal k0 times it (k0 < 0, not given: nu / (1 - nu), the elastic
+  // value of gravity loading between rollers).
   bool geostatic = false;
-  double k0 = 0.0;
+  double k0 = -1.0;
 };
 
 // A rigid body of boundary particles (per_cell^D per cell) filling a box that

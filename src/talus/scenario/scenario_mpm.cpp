@@ -174,7 +174,8 @@ mpm::BodyParams read_body(TomlReader& r, const mpm::MpmScenario& s, const DemCon
   b.velocity = detail::point_or(r, "velocity", ctx, Vec3::Zero());
   b.geostatic = r.enumeration("initial_stress", kInitialStress, 0) == 1;
   if (b.geostatic) {
-    b.k0 = number_in(r, "k0", 0.0, positive());
+    // k0 = 0 is a value (nu = 0 resolves to it), so "not given" is -1.
+    b.k0 = r.has("k0") ? number_in(r, "k0", 0.0, non_negative()) : -1.0;
   } else {
     r.reject({"k0"}, "is only used with initial_stress = \"geostatic\"");
   }
