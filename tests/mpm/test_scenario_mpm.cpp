@@ -57,6 +57,22 @@ TEST(MpmScenario, ParsesAndRoundTrips) {
   EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump()) << resolved;
 }
 
+// k0 = 0 is a value, not "from nu": given with nu = 0.24 it stays 0, and a
+// body whose nu = 0 resolves to it reads back (found by the scenario fuzzer,
+// tests/fuzz/regressions/geostatic_k0_zero_from_poisson_zero).
+TEST(MpmScenario, GeostaticK0OfZeroIsAValue) {
+  const auto given = parse_mpm_scenario(load_scenario_text(
+      edit(kBase, "initial_stress = \"geostatic\"", "initial_stress = \"geostatic\"\nk0 = 0"),
+      "k0.toml"));
+  EXPECT_EQ(mpm::resolved_k0(given.bodies[0], given.materials[0]), 0.0);
+  const std::string nu0 = edit(kBase, "poisson_ratio = 0.24", "poisson_ratio = 0");
+  const auto sc = parse_mpm_scenario(load_scenario_text(nu0, "nu0.toml"));
+  EXPECT_EQ(mpm::resolved_k0(sc.bodies[0], sc.materials[0]), 0.0);
+  const std::string resolved = mpm_scenario_to_toml(sc);
+  const auto again = parse_mpm_scenario(load_scenario_text(resolved, "resolved.toml"));
+  EXPECT_EQ(mpm::resolved_k0(again.bodies[0], again.materials[0]), 0.0);
+}
+
 TEST(MpmScenario, BadInputNamesFileLineAndKey) {
   expect_error(edit(kBase, "shape = \"cubic_bspline\"", "shape = \"quadratic\""),
                "bad.toml:6: [run] 'shape'");
