@@ -54,8 +54,6 @@ class TeamSegments {
     adaptive_.record(team_, steps, seconds, slowed);
   }
 
-  const AdaptiveTeam& adaptive() const { return adaptive_; }
-
  private:
   using Clock = std::chrono::steady_clock;
   // Times the kernel took a core from this process's threads so far.

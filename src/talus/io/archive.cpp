@@ -98,9 +98,16 @@ void write_file_atomically(const std::filesystem::path& path,
   written = written && std::fflush(file) == 0 && (!sync_to_disk || ::fsync(fileno(file)) == 0);
   const int write_error = errno;
   if (std::fclose(file) != 0 || !written) fail("write", written ? errno : write_error);
+  rename_into_place(temp, path);
+}
+
+void rename_into_place(const std::filesystem::path& temp, const std::filesystem::path& path) {
   std::error_code error;
   std::filesystem::rename(temp, path, error);
-  if (error) fail("rename", error.value());
+  if (!error) return;
+  std::error_code ignored;
+  std::filesystem::remove(temp, ignored);
+  throw RunError(fmt::format("cannot write '{}' (rename): {}", path.string(), error.message()));
 }
 
 void ArchiveWriter::begin_item(detail::ItemKind kind, char category, uint64_t element_size,

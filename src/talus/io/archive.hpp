@@ -179,5 +179,9 @@ inline void write_file_atomically(const std::filesystem::path& path, std::string
                                   bool sync_to_disk = false) {
   write_file_atomically(path, std::span<const std::string_view>(&content, 1), sync_to_disk);
 }
+// The last step of such a write, for writers that fill the temporary file
+// themselves (GDAL, a table of rows): renames `temp` to `path`; when that
+// fails, removes `temp` and throws talus::RunError naming `path`.
+void rename_into_place(const std::filesystem::path& temp, const std::filesystem::path& path);
 
 }  // namespace talus::io

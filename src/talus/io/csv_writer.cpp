@@ -109,12 +109,7 @@ void CsvSeries::close() {
     errno = close_error;
     fail("close");
   }
-  if (temp_.empty()) return;
-  std::filesystem::rename(temp_, path_, error);
-  if (error) {
-    std::filesystem::remove(temp_, error);
-    throw RunError(fmt::format("cannot write '{}' (rename): {}", path_.string(), error.message()));
-  }
+  if (!temp_.empty()) rename_into_place(temp_, path_);
 }
 
 void CsvSeries::fail(const char* step) const {

@@ -163,12 +163,7 @@ void write_geotiff(const std::string& path, const Raster& r) {
   // leaves its error behind.
   GDALClose(ds);
   if (err != CE_None || CPLGetLastErrorType() >= CE_Failure) fail();
-  std::error_code error;
-  std::filesystem::rename(temp, path, error);
-  if (error) {
-    std::filesystem::remove(temp, error);
-    throw RunError(fmt::format("cannot write '{}' (rename): {}", path, error.message()));
-  }
+  rename_into_place(temp, path);
 }
 
 void write_npy(const std::string& path, const Raster& r) {

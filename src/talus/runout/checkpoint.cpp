@@ -40,20 +40,54 @@ void check_end(const io::ArchiveReader& r, const std::string& where) {
   if (!r.at_end()) throw InputError(where + "trailing data in checkpoint");
 }
 
+// One function per model serves both directions, so that what is saved and
+// what is loaded cannot drift apart (as mpm/checkpoint.cpp).
+template <class Ar>
+void transfer(Ar& ar, DanBlocks& b, DanModel::EnergyWatch& watch, RunoutResults& r) {
+  ar(b.s), ar(b.v), ar(b.volume), ar(b.k), ar(b.time);
+  ar(watch.lowest), ar(watch.kinetic_peak), ar(watch.depth_start);
+  ar(r.front), ar(r.deposit), ar(r.runup_max), ar(r.runup_final);
+  ar(r.tail_s), ar(r.tail_s_absolute), ar(r.barrier_arrival_time), ar(r.rest_time);
+  ar(r.max_depth), ar(r.max_speed);
+}
+
+template <class Ar>
+void transfer(Ar& ar, FlowState& s, std::vector<double>& k, double& outflow, Fv2dMaxima& m,
+              double& released_volume) {
+  ar(s.h), ar(s.hu), ar(s.hv), ar(s.time);
+  ar(k), ar(outflow);
+  ar(m.height), ar(m.speed), ar(m.pressure), ar(m.arrival);
+  ar(m.peak_speed), ar(m.peak_height);
+  ar(released_volume);
+}
+
+struct Saver {
+  io::ArchiveWriter& w;
+  template <class T>
+  void operator()(const T& v) {
+    w.put(v);
+  }
+};
+
+struct Loader {
+  io::ArchiveReader& r;
+  template <class T>
+  void operator()(T& v) {
+    r.get(v);
+  }
+};
+
 }  // namespace
 
 void save_checkpoint(const DanModel& model, const RunoutTracker& tracker, StepCount count,
                      const std::filesystem::path& path) {
   io::ArchiveWriter w;
   put_header(w, "dan", count);
-  const auto& b = model.blocks();
-  w.put(b.s), w.put(b.v), w.put(b.volume), w.put(b.k), w.put(b.time);
-  const auto watch = model.energy_watch();
-  w.put(watch.lowest), w.put(watch.kinetic_peak), w.put(watch.depth_start);
-  const auto& r = tracker.results();
-  w.put(r.front), w.put(r.deposit), w.put(r.runup_max), w.put(r.runup_final);
-  w.put(r.tail_s), w.put(r.tail_s_absolute), w.put(r.barrier_arrival_time), w.put(r.rest_time);
-  w.put(r.max_depth), w.put(r.max_speed);
+  DanBlocks b = model.blocks();
+  DanModel::EnergyWatch watch = model.energy_watch();
+  RunoutResults r = tracker.results();
+  Saver save{w};
+  transfer(save, b, watch, r);
   w.save(path);
 }
 
@@ -63,14 +97,10 @@ StepCount load_checkpoint(DanModel& model, RunoutTracker& tracker,
   io::ArchiveReader r(path);
   const StepCount count = get_header(r, "dan", where);
   DanBlocks b;
-  r.get(b.s), r.get(b.v), r.get(b.volume), r.get(b.k), r.get(b.time);
   DanModel::EnergyWatch watch;
-  r.get(watch.lowest), r.get(watch.kinetic_peak), r.get(watch.depth_start);
   RunoutResults res;
-  r.get(res.front), r.get(res.deposit), r.get(res.runup_max), r.get(res.runup_final);
-  r.get(res.tail_s), r.get(res.tail_s_absolute), r.get(res.barrier_arrival_time),
-      r.get(res.rest_time);
-  r.get(res.max_depth), r.get(res.max_speed);
+  Loader load{r};
+  transfer(load, b, watch, res);
   check_end(r, where);
   try {
     model.restore(std::move(b), watch);
@@ -85,12 +115,12 @@ void save_checkpoint(const Fv2dSolver& solver, const Fv2dMaxima& maxima, double 
                      StepCount count, const std::filesystem::path& path) {
   io::ArchiveWriter w;
   put_header(w, "fv2d", count);
-  const auto& s = solver.state();
-  w.put(s.h), w.put(s.hu), w.put(s.hv), w.put(s.time);
-  w.put(solver.earth_pressure()), w.put(solver.outflow_volume());
-  w.put(maxima.height), w.put(maxima.speed), w.put(maxima.pressure), w.put(maxima.arrival);
-  w.put(maxima.peak_speed), w.put(maxima.peak_height);
-  w.put(released_volume);
+  FlowState s = solver.state();
+  std::vector<double> k = solver.earth_pressure();
+  double outflow = solver.outflow_volume();
+  Fv2dMaxima m = maxima;
+  Saver save{w};
+  transfer(save, s, k, outflow, m, released_volume);
   w.save(path);
 }
 
@@ -100,14 +130,11 @@ StepCount load_checkpoint(Fv2dSolver& solver, Fv2dMaxima& maxima, double& releas
   io::ArchiveReader r(path);
   const StepCount count = get_header(r, "fv2d", where);
   FlowState s;
-  r.get(s.h), r.get(s.hu), r.get(s.hv), r.get(s.time);
   std::vector<double> k;
   double outflow = 0.0;
-  r.get(k), r.get(outflow);
   Fv2dMaxima m;
-  r.get(m.height), r.get(m.speed), r.get(m.pressure), r.get(m.arrival);
-  r.get(m.peak_speed), r.get(m.peak_height);
-  r.get(released_volume);
+  Loader load{r};
+  transfer(load, s, k, outflow, m, released_volume);
   check_end(r, where);
   const std::size_t cells = solver.terrain().shape().cells();
   if (m.height.size() != cells || m.speed.size() != cells || m.pressure.size() != cells ||
