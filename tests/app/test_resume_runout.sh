@@ -41,7 +41,7 @@ PY
 check_rc "dan: arrival and run-up from before the checkpoint kept"
 
 killed_and_resumed fv2d "$src/tests/data/scenarios/fv2d_resume.toml"
-for f in series.csv max_height.npy max_speed.npy max_pressure.npy deposit.npy; do same fv2d $f; done
+for f in series.csv max_height.npy max_speed.npy max_pressure.npy arrival_time.npy deposit.npy; do same fv2d $f; done
 same_metrics fv2d
 
 # A runout folder without a checkpoint: the usual refusal, naming the key.

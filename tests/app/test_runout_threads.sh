@@ -12,7 +12,7 @@ for mode in adaptive team alone; do
   TALUS_TEAM=$([ $mode = adaptive ] || echo $mode) \
     "$talus" run "$scenario" --out "$tmp/$mode" --quiet -j 2 >"$tmp/py" 2>&1; rc=$?
   check_rc "two threads, $mode"
-  for f in series.csv max_height.npy max_speed.npy max_pressure.npy deposit.npy; do
+  for f in series.csv max_height.npy max_speed.npy max_pressure.npy arrival_time.npy deposit.npy; do
     check "two threads, $mode: $f as on one thread" 'cmp -s "$tmp/one/$f" "$tmp/$mode/$f"'
   done
 done
