@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "fv2d_helpers.hpp"
 
@@ -62,19 +63,7 @@ TEST(Fv2dVerification, RitterDamBreakAlongOneAxis) {
   // near them, so about 1 % at 800 cells and a clear gain on refinement.
   EXPECT_LT(fine.l1_relative, 0.01);
   EXPECT_LT(fine.l1_relative, coarse.l1_relative / 1.5);
-  // Depth 1 mm is reached where 2 c0 - x/t = sqrt(9 g 1e-3) (Ritter): x = 23.87 m.
-  // The thin tip is where a finite-volume scheme is least accurate (it lags
-  // by about 2 m at dx = 0.125 m, see docs/validation.md); it must at least
-  // converge: the lag shrinks clearly when the cells are halved.
-  const double x_mm = (2.0 * std::sqrt(kG) - std::sqrt(9.0 * kG * 1e-3)) * t;
-  auto lag = [&](const DamBreak& r, double dx) {
-    double front = 0.0;
-    for (std::size_t k = 0; k < r.h.size(); ++k)
-      if (r.h[k] > 1e-3) front = (k + 0.5) * dx - 50.0;
-    return x_mm - front;
-  };
-  EXPECT_GT(lag(fine, 0.125), 0.0);
-  EXPECT_LT(lag(fine, 0.125), 0.8 * lag(coarse, 0.25));
+  // The front itself: test_front_convergence.cpp.
   // Depths stay non-negative at the wet/dry front.
   EXPECT_GE(fine.min_depth, 0.0);
   // The same break along the rows (y) gives the same depths: the two axes
@@ -187,7 +176,9 @@ TEST(Fv2dVerification, SlidingBlockAcceleratesWithFrictionalLaw) {
   // Not to round-off: a cell that friction would reverse within a step is
   // stopped instead (the impulse is capped), and the thin, slow cells that the
   // reconstruction spreads ahead of the front are such cells; they hold well
-  // under 0.1 % of the mass (measured deficit 2.4e-4 at t = 1.5 s).
+  // under 0.1 % of the mass (measured deficit 1.0e-5 at t = 1.5 s).
+  std::printf("sliding block: relative deficit of the centre's speed %.2e\n",
+              1.0 - u_com / (a * std::cos(theta) * t));
   EXPECT_NEAR(u_com, a * std::cos(theta) * t, 1e-3 * a * std::cos(theta) * t);
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // 2D depth-averaged granular flow on a terrain grid (spec runout.md §2): the
 // Savage-Hutter equations written over the horizontal plane, solved with a
-// finite-volume HLL scheme (MUSCL-minmod reconstruction of h, u, v; two-stage
-// SSP Runge-Kutta; CFL time step).
+// finite-volume HLL scheme (MUSCL reconstruction of h, u, v with the monotonised-central limiter;
+// two-stage SSP Runge-Kutta; CFL time step).
 //
 // Unknowns per cell: H, the flow thickness measured vertically (volume per
 // unit horizontal area), and the horizontal momentum (H u, H v). On a plane
@@ -50,7 +50,7 @@ struct Fv2dParams {
   BasalRheology rheology;
   EarthPressure pressure{EarthPressureMode::SavageHutter};
   bool curvature = true;    // centripetal term in the basal normal stress
-  int order = 2;            // 1: piecewise constant, 2: MUSCL-minmod
+  int order = 2;            // 1: piecewise constant, 2: MUSCL (monotonised central)
   double courant = 0.45;    // dt (a_x / dx + a_y / dy) <= courant
   double dry_depth = 1e-6;  // m: thinner cells carry no velocity
   GridBoundary boundary = GridBoundary::Wall;
