@@ -15,6 +15,9 @@
 #include "scenario_cases.hpp"
 #include "talus/core/error.hpp"
 #include "talus/io/raster.hpp"
+#include "talus/runout/grid/fv2d_builder.hpp"
+#include "talus/runout/grid/fv2d_maxima.hpp"
+#include "talus/runout/grid/fv2d_output.hpp"
 #include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::io {
@@ -176,6 +179,51 @@ TEST(RunoutRasters, NanReleaseDepthsNeedANoDataValue) {
   const auto sc = parse(dir);
   EXPECT_EQ(sc.grid.release_depth[1 * 6 + 2], 0.0);
   EXPECT_EQ(sc.grid.release_depth[1 * 6 + 3], 1.0);
+}
+
+TEST(RunoutRasters, TerrainNoDataCellsLieOutsideTheDomain) {
+  // A clipped DEM: column 0 and row 3 have no elevation.
+  const fs::path dir = folder();
+  Raster terrain = grid(true), release = grid(false);
+  terrain.nodata = -9999.0;
+  for (std::size_t j = 0; j < 4; ++j) terrain.at(0, j) = -9999.0;
+  for (std::size_t i = 0; i < 6; ++i) terrain.at(i, 3) = -9999.0;
+  write_geotiff((dir / "terrain.tif").string(), terrain);
+  // Material released where there is no terrain is refused, naming the cell.
+  write_geotiff((dir / "release.tif").string(), release);
+  expect_refused(dir, kReleaseLine, "file", "release.tif",
+                 "cell (column 0, row 0) releases 1 m where the terrain");
+  for (std::size_t j = 0; j < 4; ++j) release.at(0, j) = 0.0;
+  for (std::size_t i = 0; i < 6; ++i) release.at(i, 3) = 0.0;
+  write_geotiff((dir / "release.tif").string(), release);
+  const auto sc = parse(dir);
+  ASSERT_EQ(sc.grid.inside.size(), 24u);
+  for (std::size_t j = 0; j < 4; ++j)
+    for (std::size_t i = 0; i < 6; ++i)
+      EXPECT_EQ(sc.grid.inside[j * 6 + i], i > 0 && j < 3 ? 1 : 0) << i << ", " << j;
+  // The run keeps its volume and leaves the outside empty; the maps mark it
+  // no-data (NaN).
+  auto solver = runout::build_fv2d(sc);
+  const double v0 = solver.volume();
+  EXPECT_DOUBLE_EQ(v0, 15 * 25.0);  // 15 cells of 5 x 5 m, 1 m deep
+  for (int k = 0; k < 50; ++k) solver.step(solver.stable_time_step());
+  EXPECT_LT(std::abs(solver.volume() - v0) / v0, 1e-12);
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(solver.state().h[3 * 6 + i], 0.0);
+  {
+    runout::Fv2dOutputs out(dir, sc.grid, false, 0.0);
+    runout::Fv2dMaxima maxima;
+    maxima.reset(solver.state().h.size());
+    maxima.observe(solver);
+    out.write_results(solver, maxima);
+  }
+  const Raster deposit = read_raster((dir / "deposit.tif").string());
+  EXPECT_TRUE(deposit.is_nodata(deposit.at(0, 0)));
+  EXPECT_TRUE(deposit.is_nodata(deposit.at(4, 3)));
+  EXPECT_FALSE(deposit.is_nodata(deposit.at(1, 0)));
+  // A terrain with no data at all is refused.
+  for (double& v : terrain.values) v = -9999.0;
+  write_geotiff((dir / "terrain.tif").string(), terrain);
+  expect_refused(dir, kTerrainLine, "file", "terrain.tif", "every cell is no-data");
 }
 
 }  // namespace

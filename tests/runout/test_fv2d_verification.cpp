@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "fv2d_helpers.hpp"
 
@@ -72,19 +73,35 @@ TEST(Fv2dVerification, RitterDamBreakAlongOneAxis) {
   for (std::size_t k = 0; k < fine.h.size(); ++k) ASSERT_NEAR(rows.h[k], fine.h[k], 1e-12);
 }
 
-// A bumpy slope with an irregular pile, walls on all sides.
-Fv2dSolver bumpy_run(GridBoundary boundary) {
-  GridShape g{48, 40, 1.0, 1.0};
-  auto bed = sample(g, [](double x, double y) {
+// A bumpy slope with an irregular pile, 48 x 40 cells, framed by `frame`
+// cells outside the domain (no elevation) on every side; cells where `hole`
+// is true (coordinates on the slope) are outside too.
+Fv2dSolver bumpy_run(GridBoundary boundary, std::size_t frame = 0,
+                     const std::function<bool(double, double)>& hole = {}) {
+  GridShape g{48 + 2 * frame, 40 + 2 * frame, 1.0, 1.0};
+  const double o = static_cast<double>(frame);
+  auto bed = sample(g, [o](double x, double y) {
+    x -= o, y -= o;
     return -0.4 * x + 1.5 * std::sin(0.3 * x) * std::cos(0.25 * y) + 0.02 * y * y;
   });
-  auto depth = sample(g, [](double x, double y) {
+  auto depth = sample(g, [o](double x, double y) {
+    x -= o, y -= o;
     const double r2 = (x - 12) * (x - 12) + (y - 20) * (y - 20);
     return r2 < 64 ? 2.0 + 0.5 * std::sin(x * y) : 0.0;
   });
+  std::vector<unsigned char> inside(g.cells(), 1);
+  for (std::size_t j = 0; j < g.ny; ++j)
+    for (std::size_t i = 0; i < g.nx; ++i) {
+      const std::size_t c = g.index(i, j);
+      const bool framed = i < frame || i >= frame + 48 || j < frame || j >= frame + 40;
+      if (framed || (hole && hole(i + 0.5 - o, j + 0.5 - o))) {
+        inside[c] = 0, depth[c] = 0.0;
+        bed[c] = std::nan("");  // never read
+      }
+    }
   auto p = frictional(18.0, 32.0);
   p.boundary = boundary;
-  return Fv2dSolver(Terrain(g, bed), p, depth);
+  return Fv2dSolver(Terrain(g, bed, inside), p, depth);
 }
 
 TEST(Fv2dVerification, MassIsConservedToRoundOffAndDepthsStayPositive) {
@@ -104,6 +121,53 @@ TEST(Fv2dVerification, MassIsConservedToRoundOffAndDepthsStayPositive) {
   run_to(open, 12.0);
   EXPECT_GT(open.outflow_volume(), 0.01 * v0);
   EXPECT_LT(std::abs(open.volume() + open.outflow_volume() - v0) / v0, 1e-12);
+}
+
+// A terrain clipped with no-data: its cells outside the domain (a raster's
+// no-data) are outside, and a face to one is an edge like the grid's own.
+TEST(Fv2dVerification, NoDataCellsAreOutsideTheDomain) {
+  // Framed by two cells of no-data, the slope runs exactly (bitwise) as the
+  // slope cropped to its data, with walls and with open edges.
+  for (GridBoundary b : {GridBoundary::Wall, GridBoundary::Open}) {
+    Fv2dSolver cropped = bumpy_run(b), framed = bumpy_run(b, 2);
+    run_to(cropped, 8.0);
+    run_to(framed, 8.0);
+    ASSERT_GT(cropped.max_speed(), 0.5);
+    for (std::size_t j = 0; j < 44; ++j)
+      for (std::size_t i = 0; i < 52; ++i) {
+        const std::size_t c = j * 52 + i;
+        if (i < 2 || i >= 50 || j < 2 || j >= 42) {
+          ASSERT_EQ(framed.state().h[c], 0.0);
+          continue;
+        }
+        const std::size_t k = (j - 2) * 48 + (i - 2);
+        ASSERT_EQ(framed.state().h[c], cropped.state().h[k]) << i << ", " << j;
+        ASSERT_EQ(framed.state().hu[c], cropped.state().hu[k]) << i << ", " << j;
+      }
+    EXPECT_EQ(framed.outflow_volume(), cropped.outflow_volume());
+    if (b == GridBoundary::Open) EXPECT_GT(framed.outflow_volume(), 0.01 * framed.volume());
+  }
+  // A hole of no-data (a building, 8 m across) in the flow's way: nothing
+  // enters it, the flow reaches it, and the volume is kept (walls) or
+  // accounted for (open edges: inside plus what left).
+  auto hole = [](double x, double y) { return std::hypot(x - 24, y - 20) < 4.0; };
+  for (GridBoundary b : {GridBoundary::Wall, GridBoundary::Open}) {
+    Fv2dSolver s = bumpy_run(b, 0, hole);
+    const double v0 = s.volume();
+    double beside = 0.0;  // deepest flow in the cells next to the hole
+    run_to(s, 8.0, [&](const Fv2dSolver& f) {
+      for (std::size_t c = 0; c < f.state().h.size(); ++c) {
+        const double x = c % 48 + 0.5, y = c / 48 + 0.5;
+        if (hole(x, y))
+          ASSERT_EQ(f.state().h[c], 0.0);
+        else if (std::hypot(x - 24, y - 20) < 5.5)
+          beside = std::max(beside, f.state().h[c]);
+      }
+    });
+    EXPECT_GT(beside, 0.1);
+    EXPECT_LT(std::abs(s.volume() + s.outflow_volume() - v0) / v0, 1e-12);
+    if (b == GridBoundary::Wall) EXPECT_EQ(s.outflow_volume(), 0.0);
+  }
 }
 
 // A cone of sand h = 0.3 (1 - r / 6 m) on a plane inclined at `slope_deg`

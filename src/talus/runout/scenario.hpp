@@ -38,12 +38,14 @@ struct ReleaseSpec {
 enum class RunoutModel { Dan, Fv2d };
 
 // The 2D model's grids, read from rasters by io (all on the terrain's grid):
-// bed elevation, obstacle heights added to it (a barrier), and the released
+// bed elevation (NaN where the terrain raster has no data: outside the
+// domain), obstacle heights added to it (a barrier), and the released
 // thickness (measured vertically; no-data cells are 0).
 struct GridSpec {
   std::string terrain_file, obstacles_file, release_file;
   GridShape shape;
   std::vector<double> elevation, obstacles, release_depth;
+  std::vector<unsigned char> inside;   // per cell 1 in the domain, 0 not; empty: all in
   double x_west = 0.0, y_north = 0.0;  // map coordinates of the outer corner
   std::string projection;              // WKT of the terrain raster
   int order = 2;

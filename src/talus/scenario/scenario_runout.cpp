@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "talus/core/error.hpp"
@@ -191,8 +192,9 @@ void check_on_terrain_grid(TomlReader& r, std::string_view key, const std::strin
 }
 
 // A raster on the terrain's grid (or the terrain itself when `terrain`);
-// no-data cells become 0, except in the terrain where they are errors. A NaN
-// is a no-data cell only when the raster says so (no-data value NaN).
+// no-data cells become 0, except in the terrain where they become NaN (outside
+// the domain). A NaN is a no-data cell only when the raster says so (no-data
+// value NaN).
 std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail::DemContext& ctx,
                               std::string& file, runout::GridSpec& g, bool terrain) {
   file = detail::required_file(r, key, ctx);
@@ -211,8 +213,7 @@ std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail:
       double& v = raster.at(i, j);
       const std::string cell = fmt::format("{}: cell (column {}, row {})", file, i, j);
       if (raster.is_nodata(v)) {
-        if (terrain) r.fail(key, cell + " has no elevation (no-data)");
-        v = 0.0;
+        v = terrain ? std::numeric_limits<double>::quiet_NaN() : 0.0;
       } else if (!std::isfinite(v)) {
         r.fail(key, fmt::format("{} is {}; expected a number (or declare NaN the raster's no-data "
                                 "value)",
@@ -224,8 +225,24 @@ std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail:
   return std::move(raster.values);
 }
 
+// The terrain's no-data cells lie outside the domain.
+void mark_domain(TomlReader& r, runout::GridSpec& g) {
+  std::size_t inside = 0;
+  g.inside.assign(g.elevation.size(), 1);
+  for (std::size_t c = 0; c < g.elevation.size(); ++c) {
+    if (std::isnan(g.elevation[c]))
+      g.inside[c] = 0;
+    else
+      ++inside;
+  }
+  if (inside == 0)
+    r.fail("file", fmt::format("{}: every cell is no-data; expected elevations", g.terrain_file));
+  if (inside == g.elevation.size()) g.inside.clear();
+}
+
 void read_terrain(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
   g.elevation = read_grid(r, "file", ctx, g.terrain_file, g, true);
+  mark_domain(r, g);
   if (r.has("obstacles")) g.obstacles = read_grid(r, "obstacles", ctx, g.obstacles_file, g, false);
   g.boundary = r.enumeration("boundary", kBoundaries, g.boundary);
   const auto order = r.integer("order", g.order);
@@ -238,6 +255,12 @@ void read_terrain(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec
 void read_grid_release(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
   r.required_enum<int>("type", {{"raster", 0}});
   g.release_depth = read_grid(r, "file", ctx, g.release_file, g, false);
+  for (std::size_t c = 0; c < g.inside.size(); ++c)
+    if (!g.inside[c] && g.release_depth[c] > 0.0)
+      r.fail("file", fmt::format("{}: cell (column {}, row {}) releases {} m where the terrain "
+                                 "({}) has no elevation; expected 0 or no-data outside the terrain",
+                                 g.release_file, c % g.shape.nx, c / g.shape.nx, g.release_depth[c],
+                                 g.terrain_file));
   r.finish();
 }
 

@@ -82,10 +82,16 @@ Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> i
   const std::size_t n = terrain_.shape().cells();
   if (initial_depth.size() != n)
     throw InputError(fmt::format("fv2d: {} initial depths for {} cells", initial_depth.size(), n));
-  for (std::size_t c = 0; c < n; ++c)
+  const auto& inside = terrain_.inside();
+  for (std::size_t c = 0; c < n; ++c) {
     if (!(initial_depth[c] >= 0.0) || !std::isfinite(initial_depth[c]))
       throw InputError(fmt::format("fv2d: initial depth {} of cell {} must be finite and >= 0",
                                    initial_depth[c], c));
+    if (!inside[c] && initial_depth[c] > 0.0)
+      throw InputError(fmt::format(
+          "fv2d: cell ({}, {}) is outside the domain (no elevation) but has a depth of {} m",
+          c % terrain_.shape().nx, c / terrain_.shape().nx, initial_depth[c]));
+  }
   if (p_.order != 1 && p_.order != 2) throw InputError("fv2d: order must be 1 or 2");
   if (p_.pressure.mode == EarthPressureMode::Hungr)
     throw InputError(
@@ -114,6 +120,28 @@ Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> i
   const auto& g = terrain_.shape();
   for (int m = 0; m < 3; ++m) fx_[m].resize((g.nx + 1) * g.ny), fy_[m].resize(g.nx * (g.ny + 1));
   quiet_.resize(n);
+  find_domain_edges();
+}
+
+void Fv2dSolver::find_domain_edges() {
+  const auto& g = terrain_.shape();
+  const auto& in = terrain_.inside();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  interior_.assign(g.cells(), 0);
+  edge_faces_.clear();
+  for (Index j = 0; j < ny; ++j)
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      if (!in[c]) continue;
+      const bool w = i > 0 && in[c - 1], e = i < nx - 1 && in[c + 1];
+      const bool s = j > 0 && in[c - nx], n = j < ny - 1 && in[c + nx];
+      interior_[c] = static_cast<unsigned char>((w && e ? 1 : 0) | (s && n ? 2 : 0));
+      const Index xf = j * (nx + 1) + i, yf = c;  // the cell's west and south faces
+      if (!w) edge_faces_.push_back({c, xf, true, -g.dy});
+      if (!e) edge_faces_.push_back({c, xf + 1, true, g.dy});
+      if (!s) edge_faces_.push_back({c, yf, false, -g.dx});
+      if (!n) edge_faces_.push_back({c, yf + nx, false, g.dx});
+    }
 }
 
 void Fv2dSolver::set_state(const FlowState& state) {
@@ -124,6 +152,10 @@ void Fv2dSolver::set_state(const FlowState& state) {
     if (!(state.h[c] >= 0.0) || !std::isfinite(state.h[c]) || !std::isfinite(state.hu[c]) ||
         !std::isfinite(state.hv[c]))
       throw InputError(fmt::format("fv2d: cell {} of a state is negative or not finite", c));
+  for (std::size_t c = 0; c < n; ++c)
+    if (!terrain_.inside()[c] && (state.h[c] != 0.0 || state.hu[c] != 0.0 || state.hv[c] != 0.0))
+      throw InputError(
+          fmt::format("fv2d: cell {} of a state is outside the domain but not empty", c));
   s_ = state;
 }
 
@@ -210,6 +242,7 @@ void Fv2dSolver::update_earth_pressure() {
   if (p_.pressure.mode == EarthPressureMode::Constant) return;
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const auto& dom = terrain_.inside();
   auto vel = [&](const std::vector<double>& q, Index c) {
     return s_.h[c] > p_.dry_depth ? q[c] / s_.h[c] : 0.0;
   };
@@ -218,8 +251,8 @@ void Fv2dSolver::update_earth_pressure() {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       if (s_.h[c] <= p_.dry_depth) continue;
-      const Index w = i > 0 ? c - 1 : c, e = i < nx - 1 ? c + 1 : c;
-      const Index s = j > 0 ? c - nx : c, n = j < ny - 1 ? c + nx : c;
+      const Index w = i > 0 && dom[c - 1] ? c - 1 : c, e = i < nx - 1 && dom[c + 1] ? c + 1 : c;
+      const Index s = j > 0 && dom[c - nx] ? c - nx : c, n = j < ny - 1 && dom[c + nx] ? c + nx : c;
       double div = 0.0;
       if (e != w) div += (vel(s_.hu, e) - vel(s_.hu, w)) / (static_cast<double>(e - w) * g.dx);
       if (n != s)
@@ -241,22 +274,29 @@ void Fv2dSolver::reconstruct(const FlowState& in) {
     v_[c] = h > dry ? in.hv[c] / h : 0.0;
   }
   if (p_.order == 1) return;
-    // Limited slopes per cell, in cell units.
+    // Limited slopes per cell, in cell units, in branch-free runs along each row
+    // (the compiler vectorises them); the slopes of cells on the grid's edge
+    // stay 0 and those next to an outside cell are set to 0 afterwards.
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < ny; ++j) {
-    for (Index i = 0; i < nx; ++i) {
-      const Index c = j * nx + i;
-      if (i > 0 && i < nx - 1) {
-        sh_x_[c] = limited_slope(in.h[c] - in.h[c - 1], in.h[c + 1] - in.h[c]);
-        su_x_[c] = limited_slope(u_[c] - u_[c - 1], u_[c + 1] - u_[c]);
-        sv_x_[c] = limited_slope(v_[c] - v_[c - 1], v_[c + 1] - v_[c]);
-      }
-      if (j > 0 && j < ny - 1) {
-        sh_y_[c] = limited_slope(in.h[c] - in.h[c - nx], in.h[c + nx] - in.h[c]);
-        su_y_[c] = limited_slope(u_[c] - u_[c - nx], u_[c + nx] - u_[c]);
-        sv_y_[c] = limited_slope(v_[c] - v_[c - nx], v_[c + nx] - v_[c]);
-      }
+    const Index row = j * nx;
+    for (Index c = row + 1; c < row + nx - 1; ++c) {
+      sh_x_[c] = limited_slope(in.h[c] - in.h[c - 1], in.h[c + 1] - in.h[c]);
+      su_x_[c] = limited_slope(u_[c] - u_[c - 1], u_[c + 1] - u_[c]);
+      sv_x_[c] = limited_slope(v_[c] - v_[c - 1], v_[c + 1] - v_[c]);
     }
+    if (j == 0 || j == ny - 1) continue;
+    for (Index c = row; c < row + nx; ++c) {
+      sh_y_[c] = limited_slope(in.h[c] - in.h[c - nx], in.h[c + nx] - in.h[c]);
+      su_y_[c] = limited_slope(u_[c] - u_[c - nx], u_[c + nx] - u_[c]);
+      sv_y_[c] = limited_slope(v_[c] - v_[c - nx], v_[c + nx] - v_[c]);
+    }
+  }
+  if (!terrain_.has_outside()) return;
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < nx * ny; ++c) {
+    if (!(interior_[c] & 1)) sh_x_[c] = su_x_[c] = sv_x_[c] = 0.0;
+    if (!(interior_[c] & 2)) sh_y_[c] = su_y_[c] = sv_y_[c] = 0.0;
   }
 }
 
@@ -265,26 +305,33 @@ void Fv2dSolver::face_fluxes(const FlowState& in) {
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
   const double dry = p_.dry_depth;
   const GridBoundary bc = p_.boundary;
-  // Faces normal to x: face f of row j lies between cells f - 1 and f.
+  const auto& dom = terrain_.inside();
+  // Faces normal to x: face f of row j lies between cells f - 1 and f. A side
+  // beyond the grid or outside the domain is the ghost of the other side.
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < ny; ++j) {
     for (Index f = 0; f <= nx; ++f) {
+      const Index k = j * (nx + 1) + f;
+      const bool has_l = f > 0 && dom[j * nx + f - 1], has_r = f < nx && dom[j * nx + f];
+      if (!has_l && !has_r) {
+        fx_[0][k] = fx_[1][k] = fx_[2][k] = 0.0;
+        continue;
+      }
       FaceState L{}, R{};
-      if (f > 0) {
+      if (has_l) {
         const Index c = j * nx + f - 1;
         L = {in.h[c] + 0.5 * sh_x_[c], u_[c] + 0.5 * su_x_[c], v_[c] + 0.5 * sv_x_[c],
              k_[c] * g_press_[c]};
       }
-      if (f < nx) {
+      if (has_r) {
         const Index c = j * nx + f;
         R = {in.h[c] - 0.5 * sh_x_[c], u_[c] - 0.5 * su_x_[c], v_[c] - 0.5 * sv_x_[c],
              k_[c] * g_press_[c]};
       }
-      if (f == 0) L = ghost(R, bc);
-      if (f == nx) R = ghost(L, bc);
+      if (!has_l) L = ghost(R, bc);
+      if (!has_r) R = ghost(L, bc);
       double flux[3];
       hll_flux(L, R, dry, flux);
-      const Index k = j * (nx + 1) + f;
       fx_[0][k] = flux[0], fx_[1][k] = flux[1], fx_[2][k] = flux[2];
     }
   }
@@ -293,22 +340,27 @@ void Fv2dSolver::face_fluxes(const FlowState& in) {
 #pragma omp parallel for schedule(static)
   for (Index f = 0; f <= ny; ++f) {
     for (Index i = 0; i < nx; ++i) {
+      const Index k = f * nx + i;
+      const bool has_l = f > 0 && dom[(f - 1) * nx + i], has_r = f < ny && dom[f * nx + i];
+      if (!has_l && !has_r) {
+        fy_[0][k] = fy_[1][k] = fy_[2][k] = 0.0;
+        continue;
+      }
       FaceState L{}, R{};
-      if (f > 0) {
+      if (has_l) {
         const Index c = (f - 1) * nx + i;
         L = {in.h[c] + 0.5 * sh_y_[c], v_[c] + 0.5 * sv_y_[c], u_[c] + 0.5 * su_y_[c],
              k_[c] * g_press_[c]};
       }
-      if (f < ny) {
+      if (has_r) {
         const Index c = f * nx + i;
         R = {in.h[c] - 0.5 * sh_y_[c], v_[c] - 0.5 * sv_y_[c], u_[c] - 0.5 * su_y_[c],
              k_[c] * g_press_[c]};
       }
-      if (f == 0) L = ghost(R, bc);
-      if (f == ny) R = ghost(L, bc);
+      if (!has_l) L = ghost(R, bc);
+      if (!has_r) R = ghost(L, bc);
       double flux[3];
       hll_flux(L, R, dry, flux);
-      const Index k = f * nx + i;
       fy_[0][k] = flux[0], fy_[1][k] = flux[2], fy_[2][k] = flux[1];
     }
   }
@@ -346,7 +398,9 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
     }
   }
   // Pass 2: the update; no flux crosses a face between two quiet cells (the
-  // ghost beyond an edge is as quiet as the cell inside).
+  // ghost beyond an edge is as quiet as the cell inside; a cell outside the
+  // domain holds nothing and is quiet). Cells outside stay empty.
+  const auto& dom = terrain_.inside();
   const auto& hxx = terrain_.curvature_xx();
   const auto& hxy = terrain_.curvature_xy();
   const auto& hyy = terrain_.curvature_yy();
@@ -355,6 +409,7 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
   for (Index j = 0; j < ny; ++j) {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
+      if (!dom[c]) continue;
       const bool q = quiet_[c];
       const bool open_w = !(q && (i == 0 || quiet_[c - 1]));
       const bool open_e = !(q && (i == nx - 1 || quiet_[c + 1]));
@@ -404,18 +459,13 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
   if (!finite)
     throw RunError(fmt::format("fv2d: a depth or momentum is not finite at t = {:.6g} s", in.time));
   out.time = in.time + dt;
-  // Volume through open edges (faces next to a quiet cell carried nothing).
+  // Volume through open edges of the domain (faces next to a quiet cell
+  // carried nothing), summed in one fixed order: the same bits on any team.
   if (p_.boundary != GridBoundary::Open) return 0.0;
   double out_flux = 0.0;
-  for (Index j = 0; j < ny; ++j) {
-    const Index w = j * nx, e = j * nx + nx - 1;
-    if (!quiet_[w]) out_flux -= fx_[0][j * (nx + 1)] * g.dy;
-    if (!quiet_[e]) out_flux += fx_[0][j * (nx + 1) + nx] * g.dy;
-  }
-  for (Index i = 0; i < nx; ++i) {
-    if (!quiet_[i]) out_flux -= fy_[0][i] * g.dx;
-    if (!quiet_[(ny - 1) * nx + i]) out_flux += fy_[0][ny * nx + i] * g.dx;
-  }
+  for (const EdgeFace& f : edge_faces_)
+    if (!quiet_[f.cell])
+      out_flux += f.outward_length * (f.normal_x ? fx_[0][f.face] : fy_[0][f.face]);
   return out_flux * dt;
 }
 

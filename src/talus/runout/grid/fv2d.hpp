@@ -30,6 +30,11 @@
 // creep mass downhill forever). Mass fluxes cancel pairwise between cells, so
 // mass is conserved to round-off; outflow through open edges is counted.
 //
+// The domain: every cell of the grid, less those the terrain marks outside (a
+// raster's no-data cells). Those hold nothing, and a face between a cell
+// inside and one outside is an edge like the grid's own: a wall, or open
+// (what crosses it leaves and is counted).
+//
 // Earth pressure k (earth_pressure.hpp): Constant, or Savage-Hutter's k_a
 // where the flow spreads (div U > 0) and k_p where it converges, kept while
 // div U = 0 (as the 1D model does at zero strain). Hungr's strain law is 1D
@@ -107,6 +112,14 @@ class Fv2dSolver {
   double euler_stage(const FlowState& in, FlowState& out, double dt);
   void reconstruct(const FlowState& in);
   void face_fluxes(const FlowState& in);
+  void find_domain_edges();
+
+  // A face between a cell of the domain and the grid's edge or a cell outside.
+  struct EdgeFace {
+    std::ptrdiff_t cell, face;  // the cell inside; the face's index in fx_ or fy_
+    bool normal_x;              // a face of fx_ (else fy_)
+    double outward_length;      // face length, negative where +flux points inwards
+  };
 
   Terrain terrain_;
   Fv2dParams p_;
@@ -120,6 +133,10 @@ class Fv2dSolver {
   std::vector<double> u_, v_, sh_x_, su_x_, sv_x_, sh_y_, su_y_, sv_y_;
   std::vector<double> fx_[3], fy_[3];
   std::vector<unsigned char> quiet_;
+  // Per cell: bit 1 set when both x-neighbours are in the domain, bit 2 both
+  // y-neighbours (where a limited slope can be taken); the domain's edge faces.
+  std::vector<unsigned char> interior_;
+  std::vector<EdgeFace> edge_faces_;
 };
 
 }  // namespace talus::runout

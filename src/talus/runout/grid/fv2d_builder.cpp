@@ -20,7 +20,8 @@ Fv2dSolver build_fv2d(const RunoutScenario& sc) {
   std::vector<double> bed = sc.grid.elevation;
   for (std::size_t c = 0; c < bed.size() && c < sc.grid.obstacles.size(); ++c)
     bed[c] += sc.grid.obstacles[c];
-  return Fv2dSolver(Terrain(sc.grid.shape, std::move(bed)), fv2d_params(sc), sc.grid.release_depth);
+  return Fv2dSolver(Terrain(sc.grid.shape, std::move(bed), sc.grid.inside), fv2d_params(sc),
+                    sc.grid.release_depth);
 }
 
 }  // namespace talus::runout

@@ -33,7 +33,12 @@ void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const 
   io::Raster r;
   r.nx = grid_.shape.nx, r.ny = grid_.shape.ny, r.dx = grid_.shape.dx, r.dy = grid_.shape.dy;
   r.x_west = grid_.x_west, r.y_north = grid_.y_north, r.projection = grid_.projection;
+  // Cells outside the domain (the terrain's no-data) are no-data in every map.
+  const auto& inside = s.terrain().inside();
+  r.nodata = std::numeric_limits<double>::quiet_NaN();
   auto write = [&](const std::string& name, std::vector<double> values) {
+    for (std::size_t c = 0; c < values.size(); ++c)
+      if (!inside[c]) values[c] = std::numeric_limits<double>::quiet_NaN();
     r.values = std::move(values);
     io::write_geotiff((dir_ / (name + ".tif")).string(), r);
     io::write_npy((dir_ / (name + ".npy")).string(), r);
@@ -45,9 +50,7 @@ void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const 
   write("max_pressure", m.pressure);
   write("deposit", deposit);
   write("elevation", s.terrain().elevation());
-  // Cells the flow never reached hold NaN, declared as the no-data value.
-  r.nodata = std::numeric_limits<double>::quiet_NaN();
-  write("arrival_time", m.arrival);
+  write("arrival_time", m.arrival);  // NaN also where the flow never arrived
   series_->flush();
 }
 

@@ -20,14 +20,19 @@ struct GridShape {
 
 class Terrain {
  public:
-  // Throws InputError for an empty grid, a cell size <= 0, a size mismatch or
-  // a non-finite elevation.
-  Terrain(GridShape shape, std::vector<double> elevation);
+  // inside: 1 for a cell of the domain, 0 for one outside it (a raster's
+  // no-data cells, whose elevation is not read); empty: every cell is inside.
+  // Throws InputError for an empty grid, a cell size <= 0, a size mismatch,
+  // no cell inside, or a non-finite elevation inside.
+  Terrain(GridShape shape, std::vector<double> elevation, std::vector<unsigned char> inside = {});
 
   const GridShape& shape() const { return shape_; }
+  // NaN outside the domain.
   const std::vector<double>& elevation() const { return b_; }
-  // Central differences inside, one-sided at the edges (so an inclined plane
-  // is exact everywhere).
+  const std::vector<unsigned char>& inside() const { return inside_; }
+  bool has_outside() const { return has_outside_; }
+  // Central differences inside, one-sided next to an edge or an outside cell
+  // (so an inclined plane is exact everywhere).
   const std::vector<double>& slope_x() const { return bx_; }
   const std::vector<double>& slope_y() const { return by_; }
   // Second derivatives (zero across an edge with a single row or column).
@@ -40,6 +45,8 @@ class Terrain {
  private:
   GridShape shape_;
   std::vector<double> b_, bx_, by_, bxx_, bxy_, byy_, cos2_;
+  std::vector<unsigned char> inside_;
+  bool has_outside_ = false;
 };
 
 }  // namespace talus::runout
