@@ -43,7 +43,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     write(os.path.join(out, "terrain.asc"), bed)
     write(os.path.join(out, "barrier.asc"),
-          lambda x, y: 4.0 if 330 <= x < 340 and 50 <= y < 200 else 0.0)
+          lambda x, y: 4.0 if 265 <= x < 275 and 50 <= y < 200 else 0.0)
     write(os.path.join(out, "release.asc"),
           lambda x, y: 3.0 if 30 <= x < 90 and 105 <= y < 145 else 0.0)
 

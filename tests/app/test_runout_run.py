@@ -119,4 +119,26 @@ with tempfile.TemporaryDirectory() as tmp:
           any("still moving at the end" in w for w in s.get("warnings", [])))
     plots("plot_runout2d.py", out)
 
+    # --- the whole 2D run: it ends by RAMMS' rule and reaches its barrier ---
+    out = os.path.join(tmp, "terrain_full")
+    s = run("runout_terrain_2d.toml", out)
+    m = s["metrics"]
+    check("fv2d stopped by the momentum rule before its 150 s, without a warning",
+          m["stopped_by_momentum"] and s["run"]["simulated_time_s"] < 150.0 and not s.get("warnings"))
+    # The rule (run.stop_momentum_fraction = 0.01): every row after the peak
+    # keeps at least 1 % of the peak momentum, the last (at the stop) less.
+    series = read_columns(os.path.join(out, "series.csv"))
+    momentum, peak = series["momentum_sum"], m["peak_momentum_kg_m_s"]
+    check("series peak momentum within the summary's", max(momentum) <= peak)
+    after = momentum[momentum.index(max(momentum)):]
+    check("momentum >= 1 % of the peak until the stop",
+          all(p >= 0.01 * peak for p in after[:-1]) and after[-1] < 0.01 * peak)
+    # The barrier: 4 m high at x = 265-275 m, y = 50-200 m (make_runout_terrain.py),
+    # i.e. columns 53-54 and rows 10-39 (rows run north to south, 50 of 5 m).
+    arrival = np.load(os.path.join(out, "arrival_time.npy"))
+    height = np.load(os.path.join(out, "max_height.npy"))
+    on_barrier = arrival[10:40, 53:55]
+    check("the flow reaches the barrier", bool(np.any(np.isfinite(on_barrier))))
+    check("and spills over it", bool(np.any(height[10:40, 55:] > 0.01)))
+
 check.finish("runout run")

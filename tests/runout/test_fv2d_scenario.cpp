@@ -35,10 +35,11 @@ TEST(Fv2dScenario, BundledScenarioBuildsAndConservesVolume) {
   auto solver = runout::build_fv2d(sc);
   // scripts/make_runout_terrain.py: 60 m x 40 m x 3 m released = 7200 m^3.
   EXPECT_NEAR(solver.volume(), 7200.0, 1e-9);
-  // The barrier raster (4 m on 2 x 30 cells) is added to the terrain.
-  EXPECT_NEAR(solver.terrain().elevation()[sc.grid.shape.index(66, 20)] -
-                  sc.grid.elevation[sc.grid.shape.index(66, 20)],
+  // The barrier raster (4 m on 2 x 30 cells, columns 53-54) is added to the terrain.
+  EXPECT_NEAR(solver.terrain().elevation()[sc.grid.shape.index(53, 20)] -
+                  sc.grid.elevation[sc.grid.shape.index(53, 20)],
               4.0, 1e-12);
+  EXPECT_EQ(sc.control.stop_momentum_fraction, 0.01);
   auto shorter = sc;
   shorter.control.duration = 20.0;
   run::Fv2dSimulation sim(shorter);
@@ -63,6 +64,8 @@ TEST(Fv2dScenario, BadInputNamesFileAndKey) {
   expect_error({"terrain.order=3"}, "order");
   expect_error({"run.courant=0.8"}, "courant");
   expect_error({"output.tail_fraction=0.1"}, "tail_fraction");
+  expect_error({"run.stop_momentum_fraction=1"}, "stop_momentum_fraction");
+  expect_error({"run.stop_momentum_fraction=-0.1"}, "stop_momentum_fraction");
 }
 
 }  // namespace

@@ -145,7 +145,9 @@ TEST(Fv2dVerification, NoDataCellsAreOutsideTheDomain) {
         ASSERT_EQ(framed.state().hu[c], cropped.state().hu[k]) << i << ", " << j;
       }
     EXPECT_EQ(framed.outflow_volume(), cropped.outflow_volume());
-    if (b == GridBoundary::Open) EXPECT_GT(framed.outflow_volume(), 0.01 * framed.volume());
+    if (b == GridBoundary::Open) {
+      EXPECT_GT(framed.outflow_volume(), 0.01 * framed.volume());
+    }
   }
   // A hole of no-data (a building, 8 m across) in the flow's way: nothing
   // enters it, the flow reaches it, and the volume is kept (walls) or
@@ -166,7 +168,9 @@ TEST(Fv2dVerification, NoDataCellsAreOutsideTheDomain) {
     });
     EXPECT_GT(beside, 0.1);
     EXPECT_LT(std::abs(s.volume() + s.outflow_volume() - v0) / v0, 1e-12);
-    if (b == GridBoundary::Wall) EXPECT_EQ(s.outflow_volume(), 0.0);
+    if (b == GridBoundary::Wall) {
+      EXPECT_EQ(s.outflow_volume(), 0.0);
+    }
   }
 }
 

@@ -11,7 +11,7 @@ namespace talus::runout {
 
 namespace {
 
-constexpr int32_t kVersion = 1;
+constexpr int32_t kVersion = 2;  // 2: fv2d's peak momentum
 
 // The header every runout checkpoint starts with; `kind` tells DAN from fv2d.
 void put_header(io::ArchiveWriter& w, const char* kind, const StepCount& count) {
@@ -57,7 +57,7 @@ void transfer(Ar& ar, FlowState& s, std::vector<double>& k, double& outflow, Fv2
   ar(s.h), ar(s.hu), ar(s.hv), ar(s.time);
   ar(k), ar(outflow);
   ar(m.height), ar(m.speed), ar(m.pressure), ar(m.arrival);
-  ar(m.peak_speed), ar(m.peak_height);
+  ar(m.peak_speed), ar(m.peak_height), ar(m.peak_momentum);
   ar(released_volume);
 }
 

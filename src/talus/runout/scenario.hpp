@@ -63,6 +63,9 @@ struct RunoutControl {
   double snapshot_interval = 0.0;    // s; 0 = first and last only
   double checkpoint_interval = 0.0;  // s; 0 = none (checkpoint.bin to resume from)
   bool stop_at_rest = true;          // end early once the mass has stopped
+  // fv2d: end early once the momentum sum has fallen below this fraction of
+  // its peak (RAMMS' stop rule); 0 = never.
+  double stop_momentum_fraction = 0.0;
 };
 
 struct RunoutScenario {

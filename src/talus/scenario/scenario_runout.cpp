@@ -63,8 +63,10 @@ void read_run(TomlReader& r, runout::RunoutScenario& s) {
     // The MUSCL scheme keeps depths positive up to 0.5 (fv2d.hpp).
     c.courant = number_in(r, "courant", 0.45, between(0.0, 0.5, true, false));
     s.grid.max_time_step = number_in(r, "max_time_step", s.grid.max_time_step, positive());
+    c.stop_momentum_fraction = number_in(r, "stop_momentum_fraction", c.stop_momentum_fraction,
+                                         between(0.0, 1.0, false, true));
   } else {
-    r.reject({"max_time_step"}, "is only used by model 'fv2d'");
+    r.reject({"max_time_step", "stop_momentum_fraction"}, "is only used by model 'fv2d'");
     c.courant = number_in(r, "courant", c.courant, between(0.0, 1.0, true, false));
   }
   s.params.gravity = number_in(r, "gravity", s.params.gravity, positive());
@@ -397,7 +399,10 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
   run["courant"] = s.control.courant;
   run["gravity"] = p.gravity;
   run["stop_at_rest"] = s.control.stop_at_rest;
-  if (grid) run["max_time_step"] = s.grid.max_time_step;
+  if (grid) {
+    run["max_time_step"] = s.grid.max_time_step;
+    run["stop_momentum_fraction"] = s.control.stop_momentum_fraction;
+  }
   Json path = {{"type", detail::name_of(kPathKinds, s.path.kind)}, {"spacing", s.path.spacing}};
   if (s.path.kind == PathKind::Flume) {
     detail::write_flume_shape(path, s.path.flume);

@@ -90,6 +90,11 @@ void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_s
       ++steps_;
       maxima_.observe(solver_);
       stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
+      if (const double f = scenario_.control.stop_momentum_fraction; f > 0.0 && !stopped_) {
+        const double momentum = solver_.momentum_sum();
+        maxima_.peak_momentum = std::max(maxima_.peak_momentum, momentum);
+        stopped_ = momentum_stop_ = momentum < f * maxima_.peak_momentum;
+      }
     }
     taken += stepped;
     segments_.end(stepped);
@@ -141,17 +146,27 @@ MethodReport Fv2dSimulation::report() const {
                {"affected_area_m2", affected_area},
                {"deposit_area_m2", deposit_area},
                {"at_rest", solver_.at_rest()},
+               {"stopped_by_momentum", momentum_stop_},
                {"kinetic_energy_J", solver_.kinetic_energy()}};
+  // The stop rule's reference, tracked only when the rule is on.
+  if (scenario_.control.stop_momentum_fraction > 0.0)
+    r.metrics["peak_momentum_kg_m_s"] = maxima_.peak_momentum;
   // "fv2d: 1200 m^3 released, 35000 m^2 affected, 21000 m^2 deposit; max height
   // 3.1 m, max speed 12 m/s, max pressure 140 kPa; at rest".
+  const std::string end =
+      solver_.at_rest() ? "at rest"
+      : momentum_stop_  ? fmt::format("stopped at t = {:.4g} s: momentum below {:g} % of its peak",
+                                      time(), 100 * scenario_.control.stop_momentum_fraction)
+                        : "still moving at the end";
   r.headline = fmt::format(
       "fv2d: {:.4g} m^3 released, {:.4g} m^2 affected, {:.4g} m^2 deposit (> 1 cm); max height "
       "{:.3g} m, max speed {:.3g} m/s, max pressure {:.3g} kPa; {}",
-      v0, affected_area, deposit_area, m.peak_height, m.peak_speed, peak_pressure / 1e3,
-      solver_.at_rest() ? "at rest" : "still moving at the end");
+      v0, affected_area, deposit_area, m.peak_height, m.peak_speed, peak_pressure / 1e3, end);
   if (solver_.outflow_volume() > 0.0)
     r.headline += fmt::format("; {:.4g} m^3 left the grid", solver_.outflow_volume());
-  if (!solver_.at_rest()) r.warnings.push_back(still_moving(time(), solver_.max_speed()));
+  // Stopping by the momentum rule is the user's choice, not a warning.
+  if (!solver_.at_rest() && !momentum_stop_)
+    r.warnings.push_back(still_moving(time(), solver_.max_speed()));
   return r;
 }
 

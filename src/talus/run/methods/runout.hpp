@@ -95,6 +95,7 @@ class Fv2dSimulation : public Simulation {
   std::int64_t steps_ = 0;
   double last_dt_ = 0.0;
   bool stopped_ = false;
+  bool momentum_stop_ = false;  // stopped by run.stop_momentum_fraction
 };
 
 // The warning of a runout run that ends before its mass has come to rest: its

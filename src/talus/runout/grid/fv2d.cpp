@@ -204,6 +204,21 @@ double Fv2dSolver::kinetic_energy() const {
   return 0.5 * p_.density * sum * terrain_.shape().cell_area();
 }
 
+double Fv2dSolver::momentum_sum() const {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  std::vector<double> rows(g.ny, 0.0);  // each row summed by one thread, in order
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    double sum = 0.0;
+    for (Index c = j * nx; c < (j + 1) * nx; ++c) sum += s_.h[c] * speed(c);
+    rows[j] = sum;
+  }
+  double sum = 0.0;
+  for (double r : rows) sum += r;
+  return p_.density * sum * g.cell_area();
+}
+
 double Fv2dSolver::max_speed() const {
   double m = 0.0;
   for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, speed(c));

@@ -100,6 +100,9 @@ class Fv2dSolver {
   double momentum_x() const;                          // rho sum H u dA
   double momentum_y() const;
   double kinetic_energy() const;  // 1/2 rho sum H |u_bed|^2 dA
+  // rho sum H |u_bed| dA, the momentum sum of RAMMS' stop rule; the same bits
+  // on any number of threads.
+  double momentum_sum() const;
   double max_speed() const;
   double max_height() const;  // bed-normal
   bool at_rest() const;       // every cell slower than kRestSpeed

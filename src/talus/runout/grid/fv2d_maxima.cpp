@@ -9,7 +9,7 @@ namespace talus::runout {
 void Fv2dMaxima::reset(std::size_t cells) {
   height.assign(cells, 0.0), speed.assign(cells, 0.0), pressure.assign(cells, 0.0);
   arrival.assign(cells, std::numeric_limits<double>::quiet_NaN());
-  peak_speed = peak_height = 0.0;
+  peak_speed = peak_height = peak_momentum = 0.0;
 }
 
 void Fv2dMaxima::observe(const Fv2dSolver& solver) {

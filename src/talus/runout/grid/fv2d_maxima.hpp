@@ -16,6 +16,7 @@ struct Fv2dMaxima {
   std::vector<double> height, speed, pressure;    // per cell, over the whole run
   std::vector<double> arrival;                    // s, per cell; NaN: never reached
   double peak_speed = 0.0, peak_height = 0.0;     // over all cells and times
+  double peak_momentum = 0.0;  // of Fv2dSolver::momentum_sum, where a stop rule reads it
   void reset(std::size_t cells);
   void observe(const Fv2dSolver& solver);
 };

@@ -13,8 +13,8 @@ Fv2dOutputs::Fv2dOutputs(std::filesystem::path dir, const GridSpec& grid, bool r
   series_ = std::make_unique<io::CsvSeries>(
       dir_ / "series.csv",
       std::vector<std::string>{"time", "volume", "outflow_volume", "mass", "momentum_x",
-                               "momentum_y", "kinetic_energy", "max_speed", "max_height",
-                               "flowing_area"},
+                               "momentum_y", "momentum_sum", "kinetic_energy", "max_speed",
+                               "max_height", "flowing_area"},
       resume);
 }
 
@@ -23,7 +23,7 @@ void Fv2dOutputs::on_series(const Fv2dSolver& s) {
   for (std::size_t c = 0; c < s.state().h.size(); ++c)
     if (s.speed(c) >= Fv2dSolver::kRestSpeed) ++flowing;
   series_->row({s.state().time, s.volume(), s.outflow_volume(), s.mass(), s.momentum_x(),
-                s.momentum_y(), s.kinetic_energy(), s.max_speed(), s.max_height(),
+                s.momentum_y(), s.momentum_sum(), s.kinetic_energy(), s.max_speed(), s.max_height(),
                 static_cast<double>(flowing) * s.terrain().shape().cell_area()});
 }
 
