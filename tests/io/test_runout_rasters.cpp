@@ -181,6 +181,40 @@ TEST(RunoutRasters, NanReleaseDepthsNeedANoDataValue) {
   EXPECT_EQ(sc.grid.release_depth[1 * 6 + 3], 1.0);
 }
 
+TEST(RunoutRasters, ReleaseOnAnotherGridIsAveragedOntoTheTerrains) {
+  // Terrain: 6 x 4 cells of 5 m from (500000, 5200000). Release: 3 x 2
+  // cells of 7 m from (500003, 5199996), depths 1..6 m: an offset, coarser
+  // grid whose cells cut the terrain's.
+  const fs::path dir = folder();
+  write_geotiff((dir / "terrain.tif").string(), grid(true));
+  Raster release;
+  release.nx = 3, release.ny = 2, release.dx = release.dy = 7.0;
+  release.x_west = 500003, release.y_north = 5199996, release.projection = wkt_of(32632);
+  release.values = {1, 2, 3, 4, 5, 6};
+  write_geotiff((dir / "release.tif").string(), release);
+  const auto sc = parse(dir);
+  // The volume is kept: sum of depth x 49 m^2 = 21 x 49 = 1029 m^3.
+  double volume = 0.0;
+  for (double d : sc.grid.release_depth) volume += d * 25.0;
+  EXPECT_NEAR(volume, 1029.0, 1e-9);
+  EXPECT_NE(sc.grid.release_resampling.find("area-weighted"), std::string::npos)
+      << sc.grid.release_resampling;
+  // Terrain cell (1, 0), x 500005-500010, y 5199995-5200000: release cell
+  // (0, 0) (x 500003-500010, y 5199989-5199996) covers 5 x 1 m of it, 1 m
+  // deep; the rest is beyond the release: 5 / 25 m.
+  EXPECT_NEAR(sc.grid.release_depth[1], 5.0 / 25.0, 1e-12);
+  // Cell (2, 1), x 500010-500015, y 5199990-5199995: release cells (1, 0)
+  // (2 m deep, x 500010-500017, y 5199989-5199996) cover all of it.
+  EXPECT_NEAR(sc.grid.release_depth[6 + 2], 2.0, 1e-12);
+  // Cell (1, 1), x 500005-500010, y 5199990-5199995: inside release cell
+  // (0, 0), 1 m deep over all of it.
+  EXPECT_NEAR(sc.grid.release_depth[6 + 1], 1.0, 1e-12);
+  // A release reaching beyond the terrain is refused with the volume beyond.
+  release.x_west = 499990;  // 10 m west of the terrain
+  write_geotiff((dir / "release.tif").string(), release);
+  expect_refused(dir, kReleaseLine, "file", "release.tif", "lie beyond the terrain's extent");
+}
+
 TEST(RunoutRasters, TerrainNoDataCellsLieOutsideTheDomain) {
   // A clipped DEM: column 0 and row 3 have no elevation.
   const fs::path dir = folder();

@@ -48,6 +48,9 @@ struct GridSpec {
   std::vector<unsigned char> inside;   // per cell 1 in the domain, 0 not; empty: all in
   double x_west = 0.0, y_north = 0.0;  // map coordinates of the outer corner
   std::string projection;              // WKT of the terrain raster
+  // How the release raster was brought onto the terrain's grid; empty when it
+  // lies on it.
+  std::string release_resampling;
   int order = 2;
   GridBoundary boundary = GridBoundary::Wall;
   double dry_depth = 1e-6;     // m

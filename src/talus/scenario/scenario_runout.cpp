@@ -13,6 +13,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/io/raster.hpp"
+#include "talus/io/raster_resample.hpp"
 #include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 
@@ -178,14 +179,25 @@ void take_terrain_grid(TomlReader& r, std::string_view key, const std::string& f
   g.x_west = raster.x_west, g.y_north = raster.y_north, g.projection = raster.projection;
 }
 
-// Another raster must lie on the terrain's grid, in its CRS.
-void check_on_terrain_grid(TomlReader& r, std::string_view key, const std::string& file,
-                           const Raster& raster, const runout::GridSpec& g) {
-  if (const std::string why = crs_mismatch(raster.projection, g.projection); !why.empty())
-    r.fail(key, fmt::format("{}: {}", file, why));
+// The terrain's grid as an empty raster.
+Raster terrain_grid(const runout::GridSpec& g) {
   Raster ref;
   ref.nx = g.shape.nx, ref.ny = g.shape.ny, ref.dx = g.shape.dx, ref.dy = g.shape.dy;
   ref.x_west = g.x_west, ref.y_north = g.y_north;
+  return ref;
+}
+
+void check_terrain_crs(TomlReader& r, std::string_view key, const std::string& file,
+                       const Raster& raster, const runout::GridSpec& g) {
+  if (const std::string why = crs_mismatch(raster.projection, g.projection); !why.empty())
+    r.fail(key, fmt::format("{}: {}", file, why));
+}
+
+// Another raster must lie on the terrain's grid, in its CRS.
+void check_on_terrain_grid(TomlReader& r, std::string_view key, const std::string& file,
+                           const Raster& raster, const runout::GridSpec& g) {
+  check_terrain_crs(r, key, file, raster, g);
+  const Raster ref = terrain_grid(g);
   if (!same_grid(raster, ref))
     r.fail(key,
            fmt::format("{}: the grid ({} x {} cells of {} x {} m) is not the terrain's "
@@ -193,12 +205,37 @@ void check_on_terrain_grid(TomlReader& r, std::string_view key, const std::strin
                        file, raster.nx, raster.ny, raster.dx, raster.dy, ref.nx, ref.ny, ref.dx));
 }
 
+// The release on another grid of the terrain's CRS, averaged onto the
+// terrain's cells by area (raster_resample.hpp); refused when part of its
+// volume lies beyond the terrain.
+std::vector<double> release_on_terrain_grid(TomlReader& r, std::string_view key,
+                                            const std::string& file, const Raster& release,
+                                            runout::GridSpec& g) {
+  const Raster ref = terrain_grid(g);
+  std::vector<double> depth = resample_area_weighted(release, ref);
+  double on_terrain = 0.0;
+  for (double d : depth) on_terrain += d;
+  on_terrain *= ref.dx * ref.dy;
+  const double total = raster_integral(release);
+  if (std::abs(total - on_terrain) > 1e-9 * total)
+    r.fail(key, fmt::format("{}: {:.6g} m^3 of the {:.6g} m^3 released lie beyond the terrain's "
+                            "extent; expected a release inside the terrain",
+                            file, total - on_terrain, total));
+  g.release_resampling = fmt::format(
+      "area-weighted average of {} x {} cells of {} x {} m onto the terrain's {} m cells (volume "
+      "kept: {:.6g} m^3)",
+      release.nx, release.ny, release.dx, release.dy, ref.dx, on_terrain);
+  return depth;
+}
+
 // A raster on the terrain's grid (or the terrain itself when `terrain`);
 // no-data cells become 0, except in the terrain where they become NaN (outside
 // the domain). A NaN is a no-data cell only when the raster says so (no-data
-// value NaN).
+// value NaN). With `resample` (the release) a raster on another grid is
+// averaged onto the terrain's.
 std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail::DemContext& ctx,
-                              std::string& file, runout::GridSpec& g, bool terrain) {
+                              std::string& file, runout::GridSpec& g, bool terrain,
+                              bool resample = false) {
   file = detail::required_file(r, key, ctx);
   Raster raster;
   try {
@@ -208,6 +245,8 @@ std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail:
   }
   if (terrain)
     take_terrain_grid(r, key, file, raster, g);
+  else if (resample)
+    check_terrain_crs(r, key, file, raster, g);
   else
     check_on_terrain_grid(r, key, file, raster, g);
   for (std::size_t j = 0; j < raster.ny; ++j)
@@ -224,6 +263,8 @@ std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail:
         r.fail(key, fmt::format("{} is negative ({})", cell, v));
       }
     }
+  if (resample && !same_grid(raster, terrain_grid(g)))
+    return release_on_terrain_grid(r, key, file, raster, g);
   return std::move(raster.values);
 }
 
@@ -256,7 +297,7 @@ void read_terrain(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec
 
 void read_grid_release(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
   r.required_enum<int>("type", {{"raster", 0}});
-  g.release_depth = read_grid(r, "file", ctx, g.release_file, g, false);
+  g.release_depth = read_grid(r, "file", ctx, g.release_file, g, false, true);
   for (std::size_t c = 0; c < g.inside.size(); ++c)
     if (!g.inside[c] && g.release_depth[c] > 0.0)
       r.fail("file", fmt::format("{}: cell (column {}, row {}) releases {} m where the terrain "

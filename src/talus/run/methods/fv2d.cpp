@@ -135,6 +135,8 @@ MethodReport Fv2dSimulation::report() const {
                 {"x_west", scenario_.grid.x_west},
                 {"y_north", scenario_.grid.y_north},
                 {"threads", threads_}};
+  if (!scenario_.grid.release_resampling.empty())
+    r.resolved["release_resampling"] = scenario_.grid.release_resampling;
   r.metrics = {{"released_volume_m3", v0},
                {"volume_m3", volume},
                {"outflow_volume_m3", solver_.outflow_volume()},
@@ -180,10 +182,12 @@ Method fv2d_method() {
     const auto sc = io::parse_runout_scenario(f);
     const auto solver = runout::build_fv2d(sc);
     const double dt = std::min(solver.stable_time_step(), sc.grid.max_time_step);
-    return Validation{
+    std::string what =
         fmt::format("2D runout on a {} x {} grid of {} m cells, {:.4g} m^3 released",
-                    sc.grid.shape.nx, sc.grid.shape.ny, sc.grid.shape.dx, solver.volume()),
-        sc.control.duration / dt, sc.control.duration};
+                    sc.grid.shape.nx, sc.grid.shape.ny, sc.grid.shape.dx, solver.volume());
+    if (!sc.grid.release_resampling.empty())
+      what += "; release resampled: " + sc.grid.release_resampling;
+    return Validation{what, sc.control.duration / dt, sc.control.duration};
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) -> std::unique_ptr<Simulation> {
     auto sc = io::parse_runout_scenario(f);
