@@ -254,6 +254,13 @@ TEST(RunoutRasters, TerrainNoDataCellsLieOutsideTheDomain) {
   EXPECT_TRUE(deposit.is_nodata(deposit.at(0, 0)));
   EXPECT_TRUE(deposit.is_nodata(deposit.at(4, 3)));
   EXPECT_FALSE(deposit.is_nodata(deposit.at(1, 0)));
+  // The map says what its heights are: bed-normal, in metres.
+  GDALDatasetH ds = GDALOpen((dir / "deposit.tif").c_str(), GA_ReadOnly);
+  ASSERT_NE(ds, nullptr);
+  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  EXPECT_STREQ(GDALGetDescription(band), "deposit height at the end, bed-normal");
+  EXPECT_STREQ(GDALGetRasterUnitType(band), "m");
+  GDALClose(ds);
   // A terrain with no data at all is refused.
   for (double& v : terrain.values) v = -9999.0;
   write_geotiff((dir / "terrain.tif").string(), terrain);

@@ -155,6 +155,8 @@ void write_geotiff(const std::string& path, const Raster& r) {
   if (!r.projection.empty()) GDALSetProjection(ds, r.projection.c_str());
   GDALRasterBandH band = GDALGetRasterBand(ds, 1);
   if (r.nodata) GDALSetRasterNoDataValue(band, *r.nodata);
+  if (!r.description.empty()) GDALSetDescription(band, r.description.c_str());
+  if (!r.unit.empty()) GDALSetRasterUnitType(band, r.unit.c_str());
   const CPLErr err =
       GDALRasterIO(band, GF_Write, 0, 0, static_cast<int>(r.nx), static_cast<int>(r.ny),
                    const_cast<double*>(r.values.data()), static_cast<int>(r.nx),

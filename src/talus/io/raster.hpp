@@ -17,6 +17,9 @@ struct Raster {
   std::optional<double> nodata;        // cells with this value have no data
   std::vector<double> values;          // ny * nx, row 0 is the northern one
   std::string projection;              // WKT; empty when unknown
+  // Written to a GeoTIFF when set: the band's description (what the values
+  // are, e.g. "deposit height, bed-normal") and its unit ("m").
+  std::string description, unit;
 
   double& at(std::size_t i, std::size_t j) { return values[j * nx + i]; }
   double at(std::size_t i, std::size_t j) const { return values[j * nx + i]; }

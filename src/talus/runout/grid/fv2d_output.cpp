@@ -36,7 +36,9 @@ void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const 
   // Cells outside the domain (the terrain's no-data) are no-data in every map.
   const auto& inside = s.terrain().inside();
   r.nodata = std::numeric_limits<double>::quiet_NaN();
-  auto write = [&](const std::string& name, std::vector<double> values) {
+  auto write = [&](const std::string& name, std::vector<double> values, const char* what,
+                   const char* unit) {
+    r.description = what, r.unit = unit;
     for (std::size_t c = 0; c < values.size(); ++c)
       if (!inside[c]) values[c] = std::numeric_limits<double>::quiet_NaN();
     r.values = std::move(values);
@@ -45,12 +47,16 @@ void Fv2dOutputs::write_results(const Fv2dSolver& s, const Fv2dMaxima& m) const 
   };
   std::vector<double> deposit(s.state().h.size());
   for (std::size_t c = 0; c < deposit.size(); ++c) deposit[c] = s.normal_height(c);
-  write("max_height", m.height);
-  write("max_speed", m.speed);
-  write("max_pressure", m.pressure);
-  write("deposit", deposit);
-  write("elevation", s.terrain().elevation());
-  write("arrival_time", m.arrival);  // NaN also where the flow never arrived
+  // Heights are bed-normal (H cos(theta)); the released depth and the volume
+  // are vertical, so on a slope the sum of deposit x cell area is less than
+  // the volume (by cos(theta)).
+  write("max_height", m.height, "maximum flow height, bed-normal", "m");
+  write("max_speed", m.speed, "maximum flow speed, bed-parallel", "m/s");
+  write("max_pressure", m.pressure, "maximum impact pressure rho v^2", "Pa");
+  write("deposit", deposit, "deposit height at the end, bed-normal", "m");
+  write("elevation", s.terrain().elevation(), "bed elevation with obstacles", "m");
+  // NaN also where the flow never arrived.
+  write("arrival_time", m.arrival, "time the flow height first exceeded 1 cm", "s");
   series_->flush();
 }
 
