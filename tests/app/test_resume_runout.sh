@@ -42,6 +42,13 @@ check_rc "dan: arrival and run-up from before the checkpoint kept"
 
 killed_and_resumed fv2d "$src/tests/data/scenarios/fv2d_resume.toml"
 for f in series.csv max_height.npy max_speed.npy max_pressure.npy arrival_time.npy deposit.npy; do same fv2d $f; done
+# Snapshot maps every 5 s: the list, the ParaView collection and the last maps.
+for f in snapshots/times.csv snapshots/flow.pvd; do same fv2d $f; done
+last=$(ls "$tmp/fv2d-full"/snapshots/height_*.tif | tail -1 | xargs basename)
+check "fv2d: snapshots after the checkpoint ($last)" '[ "$last" != height_000001.tif ]'
+same fv2d "snapshots/$last"
+same fv2d "snapshots/${last/height/speed}"
+same fv2d "snapshots/$(ls "$tmp/fv2d-full"/snapshots/flow_*.vtu | tail -1 | xargs basename)"
 same_metrics fv2d
 
 # A runout folder without a checkpoint: the usual refusal, naming the key.

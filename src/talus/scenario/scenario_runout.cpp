@@ -311,7 +311,9 @@ void read_output(TomlReader& r, runout::RunoutScenario& s) {
   s.control.series_interval = number_in(r, "series_interval", 0.01, positive());
   s.control.checkpoint_interval = number_in(r, "checkpoint_interval", 0.0, non_negative());
   if (s.model == RunoutModel::Fv2d) {
-    r.reject({"snapshot_interval", "tail_fraction"}, "is not used by model 'fv2d'");
+    // Snapshot maps are large: none unless asked for.
+    s.control.snapshot_interval = number_in(r, "snapshot_interval", 0.0, non_negative());
+    r.reject({"tail_fraction"}, "is not used by model 'fv2d'");
     r.finish();
     return;
   }
@@ -487,6 +489,7 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
                 {"release", {{"type", "raster"}, {"file", s.grid.release_file}}},
                 {"output",
                  {{"series_interval", s.control.series_interval},
+                  {"snapshot_interval", s.control.snapshot_interval},
                   {"checkpoint_interval", s.control.checkpoint_interval}}}};
   }
   Json smoothing = {{"enabled", p.smoothing.enabled},

@@ -46,7 +46,8 @@ void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
     const auto count = runout::load_checkpoint(solver_, maxima_, initial_volume_, checkpoint_);
     steps_ = count.steps, last_dt_ = count.last_time_step;
   }
-  files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid, resume, time());
+  files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid, resume, time(),
+                                                 scenario_.control.snapshot_interval > 0.0);
   outputs_ = std::make_unique<Fv2dFiles>(*files_, solver_, [this] {
     runout::save_checkpoint(solver_, maxima_, initial_volume_, {steps_, last_dt_}, checkpoint_);
   });
@@ -57,7 +58,10 @@ Schedules Fv2dSimulation::schedules() const {
   s.series = OutputSchedule(std::max(scenario_.control.series_interval, 1e-12));
   const double every = scenario_.control.checkpoint_interval;
   s.checkpoints = OutputSchedule(every > 0.0 && !checkpoint_.empty() ? every : -1.0);
-  return s;  // no snapshots yet
+  // Snapshot maps only when asked for (interval > 0): they are large.
+  const double maps = scenario_.control.snapshot_interval;
+  s.snapshots = OutputSchedule(maps > 0.0 && !checkpoint_.empty() ? maps : -1.0);
+  return s;
 }
 
 // A resumed run's maxima and released volume come from its checkpoint.
