@@ -21,10 +21,11 @@ struct FaceState {
 // Van Leer's monotonised-central slope from the differences to the left and
 // right neighbour: the central difference, capped at twice either one-sided
 // difference, zero at an extremum. Face values stay between the neighbours'
-// values (so depths are never negative), and the slope is twice minmod's
-// where the profile curves: the thin tip of a flow front (h ~ distance^2) is
-// steep enough that minmod's flattening lagged it by 16 cells at 1 mm depth in
-// Ritter's dam break; see docs/validation/runout.md.
+// values (so depths are never negative). Where the profile curves it is
+// steeper than minmod's (the smaller one-sided difference), up to twice: the
+// thin tip of a flow front, h ~ distance^2, curves, and minmod's flatter
+// slopes held the front back (docs/validation/runout.md, "The front at three
+// resolutions").
 inline double limited_slope(double left, double right) {
   const double cap = 2.0 * std::min(std::abs(left), std::abs(right));
   const double magnitude = std::min(0.5 * std::abs(left + right), cap);
