@@ -11,6 +11,10 @@ source "$(dirname "$0")/check_lib.sh"
 check "the run exits 0" '[ $rc -eq 0 ]'
 check "log.txt says what started and how many steps it takes" 'head -1 "$tmp/run/log.txt" | grep -q "started .*column_collapse.toml (dem, 1 thread, about 20000 steps)"'
 check "summary.json keeps the estimate (run.estimated_steps)" 'python3 -c "import json,sys; r=json.load(open(sys.argv[1]))[\"run\"]; sys.exit(0 if abs(r[\"estimated_steps\"] - r[\"steps\"]) < 1 else 1)" "$tmp/run/summary.json"'
+check "log.txt estimates the wall time at the first progress line" 'grep -Eq "estimated wall time: about [0-9]+ s \([0-9]+ s left at [0-9]+ steps/s\)" "$tmp/run/log.txt"'
+# Within a factor 3 of the loop's wall time: the rate of the first 0.2 s on a
+# shared machine, not a prediction to the second.
+check "summary.json keeps it (run.estimated_wall_s)" 'python3 -c "import json,sys; r=json.load(open(sys.argv[1]))[\"run\"]; sys.exit(0 if r[\"loop_wall_s\"] / 3 < r[\"estimated_wall_s\"] < 3 * r[\"loop_wall_s\"] else 1)" "$tmp/run/summary.json"'
 check "log.txt has progress lines with time, rate, time left and energy" 'grep -Eq "t = [0-9.e-]+ / 0.1 s, [0-9]+ steps/s, dt = 5e-06 s, about [0-9]+ s left, kinetic energy [0-9.e+-]+ J" "$tmp/run/log.txt"'
 check "log.txt says how the run ended" 'tail -2 "$tmp/run/log.txt" | head -1 | grep -q "completed: 20000 steps to t = 0.1 s"'
 check "and ends with the headline" 'tail -1 "$tmp/run/log.txt" | grep -Eq "dem: [0-9]+ particles, front at x = .* m; peak kinetic energy .* J at t = .* s; largest wall force .* N on"'

@@ -124,11 +124,18 @@ RunResult execute(const RunRequest& req) {
                           req.threads == 1 ? "" : "s",
                           steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
   loop.progress_seconds = std::min(loop.progress_seconds, req.log_seconds);
+  SummaryInput summary;
+  auto loop_t0 = std::chrono::steady_clock::now();
   loop.progress = [&](const Progress& p) {
+    if (summary.estimated_wall_seconds < 0.0 && p.steps_per_s > 0.0 && p.time_step > 0.0) {
+      const double left = (p.end - p.time) / p.time_step / p.steps_per_s;
+      summary.estimated_wall_seconds = seconds_since(loop_t0) + left;
+      log.note(fmt::format("estimated wall time: about {:.0f} s ({:.0f} s left at {:.0f} steps/s)",
+                           summary.estimated_wall_seconds, left, p.steps_per_s));
+    }
     log.progress(p);
     if (req.progress) req.progress(p);
   };
-  SummaryInput summary;
   summary.setup_seconds = seconds_since(t0);
   if (steps >= 0.0) summary.estimated_steps = steps;
   const std::int64_t first_step = sim->steps();
@@ -143,6 +150,7 @@ RunResult execute(const RunRequest& req) {
     summary.loop_seconds = loop.stats().wall_seconds;
   };
   try {
+    loop_t0 = std::chrono::steady_clock::now();
     loop.start(!resume);
     loop.run();
     for (auto& e : experiments) summary.experiments[e->name()] = e->finish();

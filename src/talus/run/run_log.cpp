@@ -37,6 +37,8 @@ void RunLog::progress(const Progress& p) {
 
 void RunLog::ended(const std::string& what) { line(what, echo_); }
 
+void RunLog::note(const std::string& text) { line(text, echo_); }
+
 void RunLog::headline(const std::string& text) { line(text, false); }
 
 }  // namespace talus::run

@@ -24,6 +24,8 @@ class RunLog {
   // a line when `interval` seconds have passed since the last one.
   void progress(const Progress& p);
   void ended(const std::string& what);
+  // A line during the run, as `started` (e.g. the wall-time estimate).
+  void note(const std::string& text);
   // The run's key results, after `ended`: into log.txt only (the command
   // line prints them on stderr itself).
   void headline(const std::string& text);

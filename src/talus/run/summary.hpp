@@ -17,6 +17,9 @@ struct SummaryInput {
   MethodReport report;
   std::int64_t steps = 0;
   double estimated_steps = -1.0;  // before the run or its resumed part; < 0: unknown
+  // Wall time of the loop as estimated at the first progress line (the time
+  // so far plus the steps left at the rate so far); < 0: the run ended first.
+  double estimated_wall_seconds = -1.0;
   double simulated_time = 0.0, loop_seconds = 0.0, setup_seconds = 0.0;
   nlohmann::json experiments = nlohmann::json::object();  // name -> part
 };
