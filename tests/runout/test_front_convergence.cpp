@@ -142,7 +142,7 @@ TEST(Fv2dFront, MangeneyConvergesAtFirstOrder) {
 
 // DAN's last boundary block carries half a block of mass, which Ritter's tip
 // holds over a length (13.5 g t^2 h0 ds)^(1/3) (test_dan_verification.cpp):
-// at 2.5 mm blocks the last block is ~1.4 mm deep, so a threshold of 1 mm
+// by that estimate the last block is ~1.4 mm deep at 2.5 mm blocks, so a 1 mm threshold
 // finds that block, not the profile. The DAN front is compared at 1 cm.
 TEST(DanFront, RitterConvergesAtFirstOrder) {
   // Measured: 5.2, 2.4, 1.0 mm (order 1.2).
