@@ -125,6 +125,9 @@ with tempfile.TemporaryDirectory() as tmp:
     m = s["metrics"]
     check("fv2d stopped by the momentum rule before its 150 s, without a warning",
           m["stopped_by_momentum"] and s["run"]["simulated_time_s"] < 150.0 and not s.get("warnings"))
+    with open(os.path.join(out, "log.txt")) as f:
+        check("the headline says why it stopped",
+              "stopped at t = 74.5 s: momentum below 1 % of its peak" in f.read())
     # The rule (run.stop_momentum_fraction = 0.01): every row after the peak
     # keeps at least 1 % of the peak momentum, the last (at the stop) less.
     series = read_columns(os.path.join(out, "series.csv"))

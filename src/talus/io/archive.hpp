@@ -179,6 +179,25 @@ inline void write_file_atomically(const std::filesystem::path& path, std::string
                                   bool sync_to_disk = false) {
   write_file_atomically(path, std::span<const std::string_view>(&content, 1), sync_to_disk);
 }
+// The two directions of one `transfer(ar, state...)` function that lists a
+// checkpoint's fields once, so that what is saved and what is loaded cannot
+// drift apart: ar(x) puts x (ArchiveSaver) or gets it (ArchiveLoader).
+struct ArchiveSaver {
+  ArchiveWriter& w;
+  template <class T>
+  void operator()(const T& v) {
+    w.put(v);
+  }
+};
+
+struct ArchiveLoader {
+  ArchiveReader& r;
+  template <class T>
+  void operator()(T& v) {
+    r.get(v);
+  }
+};
+
 // The last step of such a write, for writers that fill the temporary file
 // themselves (GDAL, a table of rows): renames `temp` to `path`; when that
 // fails, removes `temp` and throws talus::RunError naming `path`.

@@ -34,22 +34,6 @@ void transfer(Ar& ar, S& s) {
   }
 }
 
-struct Saver {
-  io::ArchiveWriter& w;
-  template <class T>
-  void operator()(const T& v) {
-    w.put(v);
-  }
-};
-
-struct Loader {
-  io::ArchiveReader& r;
-  template <class T>
-  void operator()(T& v) {
-    r.get(v);
-  }
-};
-
 struct StateColumns {
   std::vector<Mat3> stress, deformation;
   std::vector<double> plastic_strain, cohesion;
@@ -69,7 +53,7 @@ void save_checkpoint(const Solver<D>& s, const std::filesystem::path& path) {
   w.put(static_cast<int32_t>(s.membranes.size()));
   for (const auto& m : s.membranes)
     w.put(static_cast<int64_t>(m.size())), w.put(static_cast<int64_t>(m.carriers()));
-  Saver save{w};
+  io::ArchiveSaver save{w};
   transfer<D>(save, const_cast<Solver<D>&>(s));
   StateColumns c;
   for (const auto& st : s.particles.state) {
@@ -106,7 +90,7 @@ void load_checkpoint(Solver<D>& s, const std::filesystem::path& path) {
       throw InputError(where + fmt::format("membrane '{}' has other nodes or carriers than in the "
                                            "checkpoint",
                                            m.name));
-  Loader load{r};
+  io::ArchiveLoader load{r};
   transfer<D>(load, s);
   StateColumns c;
   r.get(c.stress), r.get(c.deformation), r.get(c.plastic_strain), r.get(c.cohesion),

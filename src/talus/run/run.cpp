@@ -125,7 +125,7 @@ RunResult execute(const RunRequest& req) {
                           steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
   loop.progress_seconds = std::min(loop.progress_seconds, req.log_seconds);
   SummaryInput summary;
-  auto loop_t0 = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point loop_t0;  // set as the loop starts
   loop.progress = [&](const Progress& p) {
     if (summary.estimated_wall_seconds < 0.0 && p.steps_per_s > 0.0 && p.time_step > 0.0) {
       const double left = (p.end - p.time) / p.time_step / p.steps_per_s;

@@ -61,22 +61,6 @@ void transfer(Ar& ar, FlowState& s, std::vector<double>& k, double& outflow, Fv2
   ar(released_volume);
 }
 
-struct Saver {
-  io::ArchiveWriter& w;
-  template <class T>
-  void operator()(const T& v) {
-    w.put(v);
-  }
-};
-
-struct Loader {
-  io::ArchiveReader& r;
-  template <class T>
-  void operator()(T& v) {
-    r.get(v);
-  }
-};
-
 }  // namespace
 
 void save_checkpoint(const DanModel& model, const RunoutTracker& tracker, StepCount count,
@@ -86,7 +70,7 @@ void save_checkpoint(const DanModel& model, const RunoutTracker& tracker, StepCo
   DanBlocks b = model.blocks();
   DanModel::EnergyWatch watch = model.energy_watch();
   RunoutResults r = tracker.results();
-  Saver save{w};
+  io::ArchiveSaver save{w};
   transfer(save, b, watch, r);
   w.save(path);
 }
@@ -99,7 +83,7 @@ StepCount load_checkpoint(DanModel& model, RunoutTracker& tracker,
   DanBlocks b;
   DanModel::EnergyWatch watch;
   RunoutResults res;
-  Loader load{r};
+  io::ArchiveLoader load{r};
   transfer(load, b, watch, res);
   check_end(r, where);
   try {
@@ -119,7 +103,7 @@ void save_checkpoint(const Fv2dSolver& solver, const Fv2dMaxima& maxima, double 
   std::vector<double> k = solver.earth_pressure();
   double outflow = solver.outflow_volume();
   Fv2dMaxima m = maxima;
-  Saver save{w};
+  io::ArchiveSaver save{w};
   transfer(save, s, k, outflow, m, released_volume);
   w.save(path);
 }
@@ -133,7 +117,7 @@ StepCount load_checkpoint(Fv2dSolver& solver, Fv2dMaxima& maxima, double& releas
   std::vector<double> k;
   double outflow = 0.0;
   Fv2dMaxima m;
-  Loader load{r};
+  io::ArchiveLoader load{r};
   transfer(load, s, k, outflow, m, released_volume);
   check_end(r, where);
   const std::size_t cells = solver.terrain().shape().cells();

@@ -208,15 +208,16 @@ double Fv2dSolver::kinetic_energy() const {
 double Fv2dSolver::momentum_sum() const {
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
-  std::vector<double> rows(g.ny, 0.0);  // each row summed by one thread, in order
+  // Each row summed by one thread, in order; then the rows, in order.
+  row_sums_.resize(g.ny);
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < ny; ++j) {
     double sum = 0.0;
     for (Index c = j * nx; c < (j + 1) * nx; ++c) sum += s_.h[c] * speed(c);
-    rows[j] = sum;
+    row_sums_[j] = sum;
   }
   double sum = 0.0;
-  for (double r : rows) sum += r;
+  for (double r : row_sums_) sum += r;
   return p_.density * sum * g.cell_area();
 }
 

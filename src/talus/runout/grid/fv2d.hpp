@@ -140,6 +140,7 @@ class Fv2dSolver {
   // y-neighbours (where a limited slope can be taken); the domain's edge faces.
   std::vector<unsigned char> interior_;
   std::vector<EdgeFace> edge_faces_;
+  mutable std::vector<double> row_sums_;  // momentum_sum's, kept between steps
 };
 
 }  // namespace talus::runout
