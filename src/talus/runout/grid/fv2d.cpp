@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "talus/core/error.hpp"
+#include "talus/runout/grid/limiter.hpp"
 
 namespace talus::runout {
 namespace {
@@ -17,20 +18,6 @@ using Index = std::ptrdiff_t;
 struct FaceState {
   double h, u, v, gp;
 };
-
-// Van Leer's monotonised-central slope from the differences to the left and
-// right neighbour: the central difference, capped at twice either one-sided
-// difference, zero at an extremum. Face values stay between the neighbours'
-// values (so depths are never negative). Where the profile curves it is
-// steeper than minmod's (the smaller one-sided difference), up to twice: the
-// thin tip of a flow front, h ~ distance^2, curves, and minmod's flatter
-// slopes held the front back (docs/validation/runout.md, "The front at three
-// resolutions").
-inline double limited_slope(double left, double right) {
-  const double cap = 2.0 * std::min(std::abs(left), std::abs(right));
-  const double magnitude = std::min(0.5 * std::abs(left + right), cap);
-  return left * right > 0.0 ? std::copysign(magnitude, left) : 0.0;  // branch-free
-}
 
 // HLL flux (mass, normal momentum, tangential momentum) with Davis's wave
 // speeds, and the exact dry-front speeds u -/+ 2c of a rarefaction into a dry
@@ -125,24 +112,9 @@ Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> i
 }
 
 void Fv2dSolver::find_domain_edges() {
-  const auto& g = terrain_.shape();
-  const auto& in = terrain_.inside();
-  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
-  interior_.assign(g.cells(), 0);
-  edge_faces_.clear();
-  for (Index j = 0; j < ny; ++j)
-    for (Index i = 0; i < nx; ++i) {
-      const Index c = j * nx + i;
-      if (!in[c]) continue;
-      const bool w = i > 0 && in[c - 1], e = i < nx - 1 && in[c + 1];
-      const bool s = j > 0 && in[c - nx], n = j < ny - 1 && in[c + nx];
-      interior_[c] = static_cast<unsigned char>((w && e ? 1 : 0) | (s && n ? 2 : 0));
-      const Index xf = j * (nx + 1) + i, yf = c;  // the cell's west and south faces
-      if (!w) edge_faces_.push_back({c, xf, true, -g.dy});
-      if (!e) edge_faces_.push_back({c, xf + 1, true, g.dy});
-      if (!s) edge_faces_.push_back({c, yf, false, -g.dx});
-      if (!n) edge_faces_.push_back({c, yf + nx, false, g.dx});
-    }
+  auto edges = runout::find_domain_edges(terrain_);
+  interior_ = std::move(edges.interior);
+  edge_faces_ = std::move(edges.faces);
 }
 
 void Fv2dSolver::set_state(const FlowState& state) {

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "talus/runout/earth_pressure.hpp"
+#include "talus/runout/grid/domain_edges.hpp"
 #include "talus/runout/grid/terrain.hpp"
 #include "talus/runout/rheology.hpp"
 
@@ -116,13 +117,6 @@ class Fv2dSolver {
   void reconstruct(const FlowState& in);
   void face_fluxes(const FlowState& in);
   void find_domain_edges();
-
-  // A face between a cell of the domain and the grid's edge or a cell outside.
-  struct EdgeFace {
-    std::ptrdiff_t cell, face;  // the cell inside; the face's index in fx_ or fy_
-    bool normal_x;              // a face of fx_ (else fy_)
-    double outward_length;      // face length, negative where +flux points inwards
-  };
 
   Terrain terrain_;
   Fv2dParams p_;

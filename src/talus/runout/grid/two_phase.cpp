@@ -1,0 +1,551 @@
+#include "talus/runout/grid/two_phase.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "talus/core/error.hpp"
+#include "talus/runout/grid/limiter.hpp"
+
+namespace talus::runout {
+namespace {
+
+using Index = std::ptrdiff_t;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One side of a face in the face's frame: each phase's depth and normal /
+// tangential velocity, the bed there, the solid's pressure coefficient.
+struct Side {
+  double hs, us, vs, hf, uf, vf, b, gs;
+};
+
+// The fluxes of a face in its frame (per phase: depth, normal and tangential
+// momentum) and, per phase, the hydrostatic correction of the normal momentum
+// that the left and the right cell add (Audusse et al. 2004).
+struct FaceFlux {
+  double f[6] = {0, 0, 0, 0, 0, 0};
+  double left[2] = {0, 0}, right[2] = {0, 0};
+};
+
+inline Side ghost(const Side& inside, GridBoundary b) {
+  if (b == GridBoundary::Open) return inside;
+  Side m = inside;
+  m.us = -inside.us, m.uf = -inside.uf;
+  return m;
+}
+
+// HLL with hydrostatic reconstruction: each side's mixture is cut to the
+// higher of the two beds (its phases in proportion), the HLL speeds cover
+// every phase present (the exact dry-front speed u + 2c towards a dry side,
+// as fv2d), and the pressure the cut removed returns as the side's correction.
+FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
+  FaceFlux out;
+  const double b_star = std::max(L.b, R.b);
+  const double hl = L.hs + L.hf, hr = R.hs + R.hf;
+  const double hl_star = std::max(0.0, hl + L.b - b_star),
+               hr_star = std::max(0.0, hr + R.b - b_star);
+  const double cut_l = hl > 0.0 ? hl_star / hl : 0.0, cut_r = hr > 0.0 ? hr_star / hr : 0.0;
+  const double hsl = L.hs * cut_l, hfl = L.hf * cut_l, hsr = R.hs * cut_r, hfr = R.hf * cut_r;
+  out.left[0] = 0.5 * L.gs * (L.hs * hl - hsl * hl_star);
+  out.left[1] = 0.5 * g * (L.hf * hl - hfl * hl_star);
+  out.right[0] = 0.5 * R.gs * (R.hs * hr - hsr * hr_star);
+  out.right[1] = 0.5 * g * (R.hf * hr - hfr * hr_star);
+  const bool wet[4] = {hsl > dry, hfl > dry, hsr > dry, hfr > dry};
+  const bool wet_l = wet[0] || wet[1], wet_r = wet[2] || wet[3];
+  if (!wet_l && !wet_r) return out;
+  const double cl = std::sqrt(std::max(g, L.gs) * hl_star);
+  const double cr = std::sqrt(std::max(g, R.gs) * hr_star);
+  const double u[4] = {wet[0] ? L.us : 0.0, wet[1] ? L.uf : 0.0, wet[2] ? R.us : 0.0,
+                       wet[3] ? R.uf : 0.0};
+  const double v[4] = {wet[0] ? L.vs : 0.0, wet[1] ? L.vf : 0.0, wet[2] ? R.vs : 0.0,
+                       wet[3] ? R.vf : 0.0};
+  double sl = kInf, sr = -kInf;
+  for (int k = 0; k < 2; ++k) {
+    if (wet[k]) sl = std::min(sl, u[k] - cl), sr = std::max(sr, u[k] + (wet_r ? cl : 2.0 * cl));
+    if (wet[k + 2])
+      sl = std::min(sl, u[k + 2] - (wet_l ? cr : 2.0 * cr)), sr = std::max(sr, u[k + 2] + cr);
+  }
+  const double ul[6] = {hsl, hsl * u[0], hsl * v[0], hfl, hfl * u[1], hfl * v[1]};
+  const double ur[6] = {hsr, hsr * u[2], hsr * v[2], hfr, hfr * u[3], hfr * v[3]};
+  const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * hl_star, ul[1] * v[0],
+                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hl_star,    ul[4] * v[1]};
+  const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * hr_star, ur[1] * v[2],
+                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hr_star,    ur[4] * v[3]};
+  if (sl >= 0.0) {
+    std::copy(fl, fl + 6, out.f);
+  } else if (sr <= 0.0) {
+    std::copy(fr, fr + 6, out.f);
+  } else {
+    const double inv = 1.0 / (sr - sl);
+    for (int m = 0; m < 6; ++m)
+      out.f[m] = (sr * fl[m] - sl * fr[m] + sl * sr * (ur[m] - ul[m])) * inv;
+  }
+  return out;
+}
+
+// What is left of a speed w by a resistance linear and quadratic in the new
+// speed w', taken fully implicitly: w' (1 + a + b w') = w, so
+// w' / w = 2 / (1 + a + sqrt((1 + a)^2 + 4 b w)). Never reverses, stable for
+// any step, and a balance of a constant force against the resistance is its
+// fixed point exactly (the Manning depth, the drag's terminal slip).
+inline double implicit_keep(double a, double b, double w) {
+  const double one_a = 1.0 + a;
+  return 2.0 / (one_a + std::sqrt(one_a * one_a + 4.0 * b * w));
+}
+
+// The fields reconstructed per cell, in the order of the slope arrays.
+enum Slope { kSlopeHs, kSlopeHf, kSlopeSurface, kSlopeUs, kSlopeVs, kSlopeUf, kSlopeVf };
+
+}  // namespace
+
+TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
+                               std::vector<double> solid_depth, std::vector<double> fluid_depth)
+    : terrain_(std::move(terrain)), p_(params) {
+  const std::size_t n = terrain_.shape().cells();
+  const auto& d = p_.drag;
+  if (!(d.solid_density > 0.0) || !(d.fluid_density >= 0.0) || !(d.gravity > 0.0))
+    throw InputError("two-phase: densities must be > 0 (fluid >= 0) and gravity > 0");
+  if (d.exponent != 1 && d.exponent != 2)
+    throw InputError("two-phase: the drag exponent J must be 1 (linear) or 2 (quadratic)");
+  if (p_.order != 1 && p_.order != 2) throw InputError("two-phase: order must be 1 or 2");
+  if (!(p_.courant > 0.0 && p_.courant <= 0.5))
+    throw InputError("two-phase: courant must be in (0, 0.5] (positivity of the MUSCL scheme)");
+  if (p_.pressure.mode == EarthPressureMode::Hungr)
+    throw InputError("two-phase: the 'hungr' earth-pressure law needs block strains (1D only)");
+  TwoPhaseState s;
+  s.hs = std::move(solid_depth), s.hf = std::move(fluid_depth);
+  s.hsu.assign(n, 0.0), s.hsv.assign(n, 0.0), s.hfu.assign(n, 0.0), s.hfv.assign(n, 0.0);
+  gamma_ = d.fluid_density / d.solid_density;
+  const auto lim = earth_pressure_limits(p_.pressure.phi_internal, p_.pressure.tan_phi_basal);
+  k_active_ = lim.active, k_passive_ = lim.passive;
+  k_.assign(n, initial_earth_pressure(p_.pressure));
+  g_solid_.resize(n), g_remain_.resize(n);
+  set_state(s);
+  stage_ = s_, stage2_ = s_;
+  for (auto* a : {&us_, &vs_, &uf_, &vf_, &eta_}) a->assign(n, 0.0);
+  for (int k = 0; k < 7; ++k) sx_[k].assign(n, 0.0), sy_[k].assign(n, 0.0);
+  const auto& g = terrain_.shape();
+  const std::size_t nfx = (g.nx + 1) * g.ny, nfy = g.nx * (g.ny + 1);
+  for (int m = 0; m < kFields; ++m) fx_[m].assign(nfx, 0.0), fy_[m].assign(nfy, 0.0);
+  for (int m = 0; m < 2; ++m)
+    cxl_[m].assign(nfx, 0.0), cxr_[m].assign(nfx, 0.0), cyl_[m].assign(nfy, 0.0),
+        cyr_[m].assign(nfy, 0.0);
+  held_.assign(n, 0);
+  domain_ = find_domain_edges(terrain_);
+  update_earth_pressure();
+}
+
+void TwoPhaseSolver::set_state(const TwoPhaseState& state) {
+  const std::size_t n = terrain_.shape().cells();
+  for (const auto* a : {&state.hs, &state.hsu, &state.hsv, &state.hf, &state.hfu, &state.hfv})
+    if (a->size() != n)
+      throw InputError(fmt::format("two-phase: a state needs {} values per field", n));
+  const auto& inside = terrain_.inside();
+  for (std::size_t c = 0; c < n; ++c) {
+    const double v[6] = {state.hs[c], state.hsu[c], state.hsv[c],
+                         state.hf[c], state.hfu[c], state.hfv[c]};
+    for (double x : v)
+      if (!std::isfinite(x))
+        throw InputError(fmt::format("two-phase: a value of cell {} is not finite", c));
+    if (!(state.hs[c] >= 0.0) || !(state.hf[c] >= 0.0))
+      throw InputError(fmt::format("two-phase: cell {} has a negative depth", c));
+    if (!inside[c] && std::any_of(v, v + 6, [](double x) { return x != 0.0; }))
+      throw InputError(
+          fmt::format("two-phase: cell ({}, {}) is outside the domain (no elevation) but not empty",
+                      c % terrain_.shape().nx, c / terrain_.shape().nx));
+  }
+  s_ = state;
+}
+
+double TwoPhaseSolver::solid_volume() const {
+  double sum = 0.0;
+  for (double h : s_.hs) sum += h;
+  return sum * terrain_.shape().cell_area();
+}
+
+double TwoPhaseSolver::fluid_volume() const {
+  double sum = 0.0;
+  for (double h : s_.hf) sum += h;
+  return sum * terrain_.shape().cell_area();
+}
+
+double TwoPhaseSolver::momentum_x() const {
+  double s = 0.0, f = 0.0;
+  for (std::size_t c = 0; c < s_.hs.size(); ++c) s += s_.hsu[c], f += s_.hfu[c];
+  return (p_.drag.solid_density * s + p_.drag.fluid_density * f) * terrain_.shape().cell_area();
+}
+
+double TwoPhaseSolver::momentum_y() const {
+  double s = 0.0, f = 0.0;
+  for (std::size_t c = 0; c < s_.hs.size(); ++c) s += s_.hsv[c], f += s_.hfv[c];
+  return (p_.drag.solid_density * s + p_.drag.fluid_density * f) * terrain_.shape().cell_area();
+}
+
+double TwoPhaseSolver::max_speed() const {
+  double m = 0.0;
+  const double dry = p_.dry_depth;
+  for (std::size_t c = 0; c < s_.hs.size(); ++c) {
+    if (s_.hs[c] > dry) m = std::max(m, std::hypot(s_.hsu[c], s_.hsv[c]) / s_.hs[c]);
+    if (s_.hf[c] > dry) m = std::max(m, std::hypot(s_.hfu[c], s_.hfv[c]) / s_.hf[c]);
+  }
+  return m;
+}
+
+double TwoPhaseSolver::stable_time_step() const {
+  const auto& g = terrain_.shape();
+  const Index n = static_cast<Index>(g.cells());
+  const double dry = p_.dry_depth, grav = p_.drag.gravity;
+  double rate = 0.0;
+  bool wet = false;
+#pragma omp parallel for schedule(static) reduction(max : rate) reduction(|| : wet)
+  for (Index c = 0; c < n; ++c) {
+    const double hs = s_.hs[c], hf = s_.hf[c];
+    if (hs + hf <= dry) continue;
+    wet = true;
+    const double a = std::sqrt(std::max(grav, g_solid_[c]) * (hs + hf));
+    if (hs > dry)
+      rate = std::max(
+          rate, (std::abs(s_.hsu[c] / hs) + a) / g.dx + (std::abs(s_.hsv[c] / hs) + a) / g.dy);
+    if (hf > dry)
+      rate = std::max(
+          rate, (std::abs(s_.hfu[c] / hf) + a) / g.dx + (std::abs(s_.hfv[c] / hf) + a) / g.dy);
+  }
+  if (!wet) return kInf;
+  // As fv2d: still material set moving by gravity crosses at most `courant` of a cell.
+  const double from_rest = std::sqrt(p_.courant * std::min(g.dx, g.dy) / grav);
+  return rate > 0.0 ? std::min(p_.courant / rate, from_rest) : from_rest;
+}
+
+void TwoPhaseSolver::update_earth_pressure() {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const auto& dom = terrain_.inside();
+  const double dry = p_.dry_depth, grav = p_.drag.gravity, gam = gamma_;
+  auto vel = [&](const std::vector<double>& q, Index c) {
+    return s_.hs[c] > dry ? q[c] / s_.hs[c] : 0.0;
+  };
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      // The solid's earth pressure follows the divergence of its velocity (fv2d's rule).
+      if (p_.pressure.mode != EarthPressureMode::Constant && s_.hs[c] > dry) {
+        const Index w = i > 0 && dom[c - 1] ? c - 1 : c, e = i < nx - 1 && dom[c + 1] ? c + 1 : c;
+        const Index s = j > 0 && dom[c - nx] ? c - nx : c;
+        const Index n = j < ny - 1 && dom[c + nx] ? c + nx : c;
+        double div = 0.0;
+        if (e != w) div += (vel(s_.hsu, e) - vel(s_.hsu, w)) / (static_cast<double>(e - w) * g.dx);
+        if (n != s)
+          div += (vel(s_.hsv, n) - vel(s_.hsv, s)) / (static_cast<double>((n - s) / nx) * g.dy);
+        if (div > 0.0) k_[c] = k_active_;
+        if (div < 0.0) k_[c] = k_passive_;
+      }
+      const double c2 = dom[c] ? terrain_.cos2()[c] : 1.0;
+      g_solid_[c] = gam * grav + k_[c] * (1.0 - gam) * grav * c2 * c2;
+      g_remain_[c] = (1.0 - gam) * grav * (c2 - k_[c] * c2 * c2);
+    }
+  }
+}
+
+void TwoPhaseSolver::reconstruct(const TwoPhaseState& in) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double dry = p_.dry_depth;
+  const auto& b = terrain_.elevation();
+  const auto& dom = terrain_.inside();
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < nx * ny; ++c) {
+    const double hs = in.hs[c], hf = in.hf[c];
+    us_[c] = hs > dry ? in.hsu[c] / hs : 0.0, vs_[c] = hs > dry ? in.hsv[c] / hs : 0.0;
+    uf_[c] = hf > dry ? in.hfu[c] / hf : 0.0, vf_[c] = hf > dry ? in.hfv[c] / hf : 0.0;
+    eta_[c] = dom[c] ? b[c] + hs + hf : 0.0;
+  }
+  if (p_.order == 1) return;
+  const std::vector<double>* field[7] = {&in.hs, &in.hf, &eta_, &us_, &vs_, &uf_, &vf_};
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    const Index row = j * nx;
+    for (int k = 0; k < 7; ++k) {
+      const auto& q = *field[k];
+      auto& sx = sx_[k];
+      auto& sy = sy_[k];
+      for (Index c = row + 1; c < row + nx - 1; ++c)
+        sx[c] = limited_slope(q[c] - q[c - 1], q[c + 1] - q[c]);
+      if (j == 0 || j == ny - 1) continue;
+      for (Index c = row; c < row + nx; ++c)
+        sy[c] = limited_slope(q[c] - q[c - nx], q[c + nx] - q[c]);
+    }
+  }
+  if (!terrain_.has_outside()) return;
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < nx * ny; ++c)
+    for (int k = 0; k < 7; ++k) {
+      if (!(domain_.interior[c] & 1)) sx_[k][c] = 0.0;
+      if (!(domain_.interior[c] & 2)) sy_[k][c] = 0.0;
+    }
+}
+
+void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double dry = p_.dry_depth, grav = p_.drag.gravity;
+  const GridBoundary bc = p_.boundary;
+  const auto& dom = terrain_.inside();
+  // A cell's side at a face, half a cell along its slopes (sign +1: its
+  // east / north side, -1: west / south); in the frame of a face normal to y
+  // the normal velocity is v.
+  auto side = [&](Index c, double sign, const std::vector<double>* s, bool normal_y) {
+    const double hs = in.hs[c] + 0.5 * sign * s[kSlopeHs][c];
+    const double hf = in.hf[c] + 0.5 * sign * s[kSlopeHf][c];
+    const double surface = eta_[c] + 0.5 * sign * s[kSlopeSurface][c];
+    const double us = us_[c] + 0.5 * sign * s[kSlopeUs][c],
+                 vs = vs_[c] + 0.5 * sign * s[kSlopeVs][c];
+    const double uf = uf_[c] + 0.5 * sign * s[kSlopeUf][c],
+                 vf = vf_[c] + 0.5 * sign * s[kSlopeVf][c];
+    return normal_y ? Side{hs, vs, us, hf, vf, uf, surface - hs - hf, g_solid_[c]}
+                    : Side{hs, us, vs, hf, uf, vf, surface - hs - hf, g_solid_[c]};
+  };
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index f = 0; f <= nx; ++f) {
+      const Index k = j * (nx + 1) + f;
+      const bool has_l = f > 0 && dom[j * nx + f - 1], has_r = f < nx && dom[j * nx + f];
+      FaceFlux flux;
+      if (has_l || has_r) {
+        Side L{}, R{};
+        if (has_l) L = side(j * nx + f - 1, 1.0, sx_, false);
+        if (has_r) R = side(j * nx + f, -1.0, sx_, false);
+        if (!has_l) L = ghost(R, bc);
+        if (!has_r) R = ghost(L, bc);
+        flux = face_flux(L, R, grav, dry);
+      }
+      for (int m = 0; m < kFields; ++m) fx_[m][k] = flux.f[m];
+      for (int m = 0; m < 2; ++m) cxl_[m][k] = flux.left[m], cxr_[m][k] = flux.right[m];
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (Index f = 0; f <= ny; ++f) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index k = f * nx + i;
+      const bool has_l = f > 0 && dom[(f - 1) * nx + i], has_r = f < ny && dom[f * nx + i];
+      FaceFlux flux;
+      if (has_l || has_r) {
+        Side L{}, R{};
+        if (has_l) L = side((f - 1) * nx + i, 1.0, sy_, true);
+        if (has_r) R = side(f * nx + i, -1.0, sy_, true);
+        if (!has_l) L = ghost(R, bc);
+        if (!has_r) R = ghost(L, bc);
+        flux = face_flux(L, R, grav, dry);
+      }
+      // Back to x, y components: the face frame's normal momentum is y's.
+      const int to_xy[kFields] = {kHs, kYs, kXs, kHf, kYf, kXf};
+      for (int m = 0; m < kFields; ++m) fy_[to_xy[m]][k] = flux.f[m];
+      for (int m = 0; m < 2; ++m) cyl_[m][k] = flux.left[m], cyr_[m][k] = flux.right[m];
+    }
+  }
+}
+
+double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, double dt,
+                                   double* fluid_out) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double dry = p_.dry_depth, rx = dt / g.dx, ry = dt / g.dy;
+  const double grav = p_.drag.gravity, gam = gamma_;
+  const double rho_s = p_.drag.solid_density, rho_f = p_.drag.fluid_density;
+  const auto& bx = terrain_.slope_x();
+  const auto& by = terrain_.slope_y();
+  const auto& dom = terrain_.inside();
+  const auto& cos2 = terrain_.cos2();
+  reconstruct(in);
+  face_fluxes(in);
+  auto solid_fraction = [&](Index c) {
+    const double h = in.hs[c] + in.hf[c];
+    return h > dry ? in.hs[c] / h : 0.0;
+  };
+  // The explicit change of a cell's six fields over the stage: fluxes (the
+  // solid's only through faces `open`: west, east, south, north), the
+  // hydrostatic corrections, the interior bed terms of the reconstruction,
+  // the solid's remaining bed term and the non-conservative fraction terms.
+  auto explicit_change = [&](Index c, Index i, Index j, const bool open[4], double d[kFields]) {
+    const Index w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
+    for (int m = 0; m < kFields; ++m) {
+      const bool solid = m < kHf;
+      const double ow = !solid || open[0], oe = !solid || open[1];
+      const double os = !solid || open[2], on = !solid || open[3];
+      d[m] = -rx * (oe * fx_[m][e] - ow * fx_[m][w]) - ry * (on * fy_[m][n] - os * fy_[m][s]);
+    }
+    d[kXs] -= rx * (open[1] * cxl_[0][e] - open[0] * cxr_[0][w]);
+    d[kYs] -= ry * (open[3] * cyl_[0][n] - open[2] * cyr_[0][s]);
+    d[kXf] -= rx * (cxl_[1][e] - cxr_[1][w]);
+    d[kYf] -= ry * (cyl_[1][n] - cyr_[1][s]);
+    const double hs = in.hs[c], hf = in.hf[c], h = hs + hf;
+    if (p_.order == 2) {  // -c H_p (b_e - b_w) / dx, b_e - b_w = slope(surface) - slope(H)
+      const double dbx = sx_[kSlopeSurface][c] - sx_[kSlopeHs][c] - sx_[kSlopeHf][c];
+      const double dby = sy_[kSlopeSurface][c] - sy_[kSlopeHs][c] - sy_[kSlopeHf][c];
+      d[kXs] -= rx * g_solid_[c] * hs * dbx, d[kYs] -= ry * g_solid_[c] * hs * dby;
+      d[kXf] -= rx * grav * hf * dbx, d[kYf] -= ry * grav * hf * dby;
+    }
+    d[kXs] -= dt * g_remain_[c] * hs * bx[c];
+    d[kYs] -= dt * g_remain_[c] * hs * by[c];
+    if (h <= dry) return;
+    // 1/2 c H^2 grad(alpha) with alpha at a face the mean of its two cells
+    // (a neighbour outside or dry counts as this cell).
+    const double a = solid_fraction(c);
+    auto fraction_at = [&](bool has, Index nb) {
+      return has && dom[nb] && in.hs[nb] + in.hf[nb] > dry ? solid_fraction(nb) : a;
+    };
+    const double dax = 0.5 * (fraction_at(i < nx - 1, c + 1) - fraction_at(i > 0, c - 1)) / g.dx;
+    const double day = 0.5 * (fraction_at(j < ny - 1, c + nx) - fraction_at(j > 0, c - nx)) / g.dy;
+    const double p = 0.5 * grav * h * h * dt;
+    d[kXs] += gam * p * dax, d[kYs] += gam * p * day;
+    d[kXf] -= p * dax, d[kYf] -= p * day;
+  };
+  auto viscosity = [&](double alpha_s) {
+    return two_phase::julien_obrien_viscosity(p_.viscosity_alpha, p_.viscosity_beta, alpha_s);
+  };
+  const int J = p_.drag.exponent;
+  // Pass 1: which cells' solid friction holds at rest through this stage
+  // (fv2d's rule, with the drag the fluid exerts on the still solid).
+  const bool all_open[4] = {true, true, true, true};
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      const double hs = in.hs[c];
+      if (!dom[c] || hs <= dry) {
+        held_[c] = 2;  // no solid: as quiet as a held one
+        continue;
+      }
+      if (in.hsu[c] != 0.0 || in.hsv[c] != 0.0) {
+        held_[c] = 0;
+        continue;
+      }
+      double d[kFields];
+      explicit_change(c, i, j, all_open, d);
+      double mx = d[kXs], my = d[kYs];
+      const double hf = in.hf[c], h = hs + hf;
+      if (hf > dry) {
+        const double as = hs / h,
+                     c_drag = two_phase::drag_coefficient(p_.drag, as, 1.0 - as, viscosity(as));
+        const double ux = uf_[c], uy = vf_[c], speed = std::hypot(ux, uy);
+        const double scale = dt * h * c_drag * (J == 2 ? speed : 1.0) / rho_s;
+        mx += scale * ux, my += scale * uy;
+      }
+      const double hold = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs;
+      held_[c] = mx * mx + my * my <= hold * hold ? 1 : 0;
+    }
+  }
+  // Pass 2: the update. No solid crosses a face between two quiet cells.
+  bool finite = true;
+#pragma omp parallel for schedule(static) reduction(&& : finite)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i;
+      if (!dom[c]) continue;
+      const bool q = held_[c] != 0;
+      const bool open[4] = {!(q && (i == 0 || held_[c - 1])), !(q && (i == nx - 1 || held_[c + 1])),
+                            !(q && (j == 0 || held_[c - nx])),
+                            !(q && (j == ny - 1 || held_[c + nx]))};
+      double d[kFields];
+      explicit_change(c, i, j, open, d);
+      const double hs0 = in.hs[c], hf0 = in.hf[c];
+      const double hs = hs0 + d[kHs], hf = hf0 + d[kHf], h = hs + hf;
+      out.hs[c] = hs, out.hf[c] = hf;
+      double ms[2] = {in.hsu[c] + d[kXs], in.hsv[c] + d[kYs]};
+      double mf[2] = {in.hfu[c] + d[kXf], in.hfv[c] + d[kYf]};
+      const bool solid_held = held_[c] == 1;
+      const bool solid_wet = hs > dry && !solid_held, fluid_wet = hf > dry;
+      if (!solid_wet) ms[0] = ms[1] = 0.0;
+      if (!fluid_wet) mf[0] = mf[1] = 0.0;
+      const double as = h > dry ? hs / h : 0.0;
+      const double eta = viscosity(as);
+      // Drag and virtual mass: implicit in the relative velocity, momentum
+      // conserving (a held solid takes its share through the bed).
+      if (fluid_wet && hs > dry) {
+        const double c_drag = two_phase::drag_coefficient(p_.drag, as, 1.0 - as, eta);
+        const double m_s = rho_s * hs, m_f = rho_f * hf;
+        if (solid_wet) {
+          double rel[2] = {mf[0] / hf - ms[0] / hs, mf[1] / hf - ms[1] / hs};
+          const double a = h * c_drag * (1.0 / m_s + 1.0 / m_f);
+          const double speed = std::hypot(rel[0], rel[1]);
+          const double keep =
+              J == 2 ? implicit_keep(0.0, dt * a, speed) : implicit_keep(dt * a, 0.0, speed);
+          double next[2] = {rel[0] * keep, rel[1] * keep};
+          if (p_.virtual_mass && hs0 > dry && hf0 > dry) {
+            const double r = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
+            const double before[2] = {in.hfu[c] / hf0 - in.hsu[c] / hs0,
+                                      in.hfv[c] / hf0 - in.hsv[c] / hs0};
+            for (int k = 0; k < 2; ++k) next[k] = before[k] + r * (next[k] - before[k]);
+          }
+          for (int k = 0; k < 2; ++k) {
+            const double change = next[k] - rel[k];
+            ms[k] -= hs * m_f / (m_s + m_f) * change;
+            mf[k] += hf * m_s / (m_s + m_f) * change;
+          }
+        } else {
+          const double a = dt * h * c_drag / m_f;
+          const double keep = J == 2 ? implicit_keep(0.0, a, std::hypot(mf[0], mf[1]) / hf)
+                                     : implicit_keep(a, 0.0, 0.0);
+          mf[0] *= keep, mf[1] *= keep;
+        }
+      }
+      // The solid's Coulomb friction on its buoyant weight (of the stage's
+      // input depth, as fv2d): it stops a cell, never reverses it.
+      if (solid_wet) {
+        const double impulse = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs0;
+        const double m = std::hypot(ms[0], ms[1]);
+        const double scale = m > impulse ? 1.0 - impulse / m : 0.0;
+        ms[0] *= scale, ms[1] *= scale;
+      }
+      // The fluid's Manning and laminar resistance, implicit in the speed.
+      if (fluid_wet) {
+        const double laminar = rho_f > 0.0 ? p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
+        const double manning = grav * p_.manning * p_.manning / (h * std::cbrt(h));
+        const double keep =
+            implicit_keep(dt * laminar, dt * manning, std::hypot(mf[0], mf[1]) / hf);
+        mf[0] *= keep, mf[1] *= keep;
+      }
+      out.hsu[c] = ms[0], out.hsv[c] = ms[1], out.hfu[c] = mf[0], out.hfv[c] = mf[1];
+      if (!std::isfinite(h) || !std::isfinite(ms[0] + ms[1] + mf[0] + mf[1])) finite = false;
+    }
+  }
+  if (!finite)
+    throw RunError(
+        fmt::format("two-phase: a depth or momentum is not finite at t = {:.6g} s", in.time));
+  out.time = in.time + dt;
+  *fluid_out = 0.0;
+  if (p_.boundary != GridBoundary::Open) return 0.0;
+  double solid = 0.0, fluid = 0.0;
+  for (const EdgeFace& f : domain_.faces) {
+    const auto& flux = f.normal_x ? fx_ : fy_;
+    if (!held_[f.cell]) solid += f.outward_length * flux[kHs][f.face];
+    fluid += f.outward_length * flux[kHf][f.face];
+  }
+  *fluid_out = fluid * dt;
+  return solid * dt;
+}
+
+void TwoPhaseSolver::step(double dt) {
+  if (!(dt > 0.0)) throw RunError(fmt::format("two-phase: time step {} must be positive", dt));
+  update_earth_pressure();
+  double f1 = 0.0, f2 = 0.0;
+  const double s1 = euler_stage(s_, stage_, dt, &f1);
+  const double s2 = euler_stage(stage_, stage2_, dt, &f2);
+  const Index n = static_cast<Index>(s_.hs.size());
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < n; ++c) {
+    s_.hs[c] = 0.5 * (s_.hs[c] + stage2_.hs[c]);
+    s_.hsu[c] = 0.5 * (s_.hsu[c] + stage2_.hsu[c]);
+    s_.hsv[c] = 0.5 * (s_.hsv[c] + stage2_.hsv[c]);
+    s_.hf[c] = 0.5 * (s_.hf[c] + stage2_.hf[c]);
+    s_.hfu[c] = 0.5 * (s_.hfu[c] + stage2_.hfu[c]);
+    s_.hfv[c] = 0.5 * (s_.hfv[c] + stage2_.hfv[c]);
+  }
+  s_.time += dt;
+  outflow_s_ += 0.5 * (s1 + s2);
+  outflow_f_ += 0.5 * (f1 + f2);
+}
+
+}  // namespace talus::runout

@@ -1,0 +1,133 @@
+#pragma once
+// Two-phase (solid-fluid) depth-averaged flow on a terrain grid: the model of
+// van den Bout et al. (2021) §2.3 for unstructured material (f_sc = f_fc = 0,
+// which is Pudasaini's 2012 model; spec runout.md §3), on the finite-volume
+// machinery of fv2d (fv2d.hpp): cells of the terrain grid, HLL fluxes with
+// MUSCL reconstruction (monotonised central), two-stage SSP Runge-Kutta, CFL
+// steps, no-data cells outside the domain, walls or open edges.
+//
+// Unknowns per cell, each phase p in {s (solid), f (fluid)}: its depth
+// H_p = alpha_p H (volume per unit horizontal area; H = H_s + H_f, alpha_s +
+// alpha_f = 1) and its horizontal momentum H_p U_p. Per unit horizontal area
+// and unit density of the phase:
+//   dH_p/dt + div(H_p U_p) = 0
+//   fluid:  d(H_f U_f)/dt + div(H_f U_f U_f) = -g H_f grad(H + b)
+//           - g n^2 |U_f| U_f H_f / H^(4/3) - chi eta U_f / (rho_f H) + D / rho_f
+//   solid:  d(H_s U_s)/dt + div(H_s U_s U_s) = -gamma g H_s grad(H + b)
+//           - grad(1/2 k (1 - gamma) g cos^4 H_s H) - (1 - gamma) g cos^2 H_s grad(b)
+//           - tan(delta) (1 - gamma) g cos^2 H_s U_s / |U_s| - D / rho_s
+// with gamma = rho_f / rho_s. The fluid pressure is hydrostatic in the
+// vertical over the mixture's depth (seed eqs. 37-38): it pushes the fluid
+// and, as buoyancy, the solid (whose basal normal stress and earth pressure
+// are of its buoyant weight, (1 - gamma)). The solid's own terms are fv2d's
+// Savage-Hutter ones, so alpha_f = 0 with gamma = 0 is fv2d's granular model;
+// alpha_s = 0 is the shallow-water equations with Manning friction. The
+// interphase force D = H C (U_f - U_s) |U_f - U_s|^(J - 1) has Pudasaini's
+// drag coefficient C (two_phase_closures.hpp) and acts with virtual mass;
+// eta = alpha e^(beta alpha_s); chi is the fluid's vertical shear factor
+// (chi eta U / H is the bed shear of a laminar sheet; 3 for a parabolic
+// profile, Iverson & Denlinger 2001).
+//
+// The discretisation (docs/design.md, "The two-phase solver"):
+// - The pressure terms -c grad(1/2 alpha H^2) are fluxes and the bed terms
+//   -c alpha H grad(b) are taken by hydrostatic reconstruction (Audusse et
+//   al. 2004) with second-order interior terms, so a lake at rest over any bed
+//   stays at rest to round-off (well-balanced). What the solid's bed term
+//   has beyond its pressure coefficient is added with the terrain's slope,
+//   and the non-conservative parts 1/2 c H^2 grad(alpha) centred.
+// - Face states: each phase's depth, the free surface H + b and the velocities
+//   are reconstructed (limited), so a phase absent on both sides of a face
+//   has no flux; HLL with wave speeds covering both phases.
+// - Stiff sources implicitly, after the explicit update of a stage: the drag
+//   (exactly momentum-conserving; the relative velocity decays as
+//   1 / (1 + dt a |dU|^(J-1)), never reversing), then virtual mass (scales
+//   the stage's change of the relative velocity by r, finite as alpha_f -> 0),
+//   then the solid's Coulomb friction (stops, never reverses; a solid at rest
+//   stays held while friction can hold it, as in fv2d) and the fluid's
+//   Manning and laminar resistance (implicit in the speed). None of these
+//   limits the step, so alpha_s or alpha_f -> 0 does not make it stiff.
+// - Virtual mass is applied to the change of each phase's cell velocity over
+//   a stage (local, not material, acceleration).
+#include <vector>
+
+#include "talus/runout/earth_pressure.hpp"
+#include "talus/runout/grid/domain_edges.hpp"
+#include "talus/runout/grid/fv2d.hpp"
+#include "talus/runout/grid/terrain.hpp"
+#include "talus/runout/two_phase_closures.hpp"
+
+namespace talus::runout {
+
+struct TwoPhaseParams {
+  two_phase::DragParams drag;       // densities, gravity, grain size, drag law
+  double tan_basal_friction = 0.0;  // tan(delta), the solid's Coulomb friction
+  EarthPressure pressure{EarthPressureMode::SavageHutter};
+  double manning = 0.0;          // n, s m^-1/3 (fluid)
+  double viscosity_alpha = 0.0;  // Pa s, eta = alpha e^(beta alpha_s)
+  double viscosity_beta = 0.0;   // -
+  double shear_factor = 3.0;     // chi
+  bool virtual_mass = true;
+  int order = 2;
+  double courant = 0.45;
+  double dry_depth = 1e-6;  // m: a thinner phase carries no velocity
+  GridBoundary boundary = GridBoundary::Wall;
+};
+
+struct TwoPhaseState {
+  std::vector<double> hs, hsu, hsv;  // solid: H_s, H_s U_s, H_s V_s per cell
+  std::vector<double> hf, hfu, hfv;  // fluid: H_f, H_f U_f, H_f V_f
+  double time = 0.0;
+};
+
+class TwoPhaseSolver {
+ public:
+  // Depths of each phase per cell (>= 0, finite, 0 outside the domain), at
+  // rest. Throws InputError for a size mismatch, a bad depth or parameter.
+  TwoPhaseSolver(Terrain terrain, TwoPhaseParams params, std::vector<double> solid_depth,
+                 std::vector<double> fluid_depth);
+
+  double stable_time_step() const;  // infinity when every cell is dry
+  void step(double dt);             // throws RunError when a value is not finite
+
+  const TwoPhaseState& state() const { return s_; }
+  void set_state(const TwoPhaseState& state);  // checks sizes, signs, finiteness
+  const Terrain& terrain() const { return terrain_; }
+  const TwoPhaseParams& params() const { return p_; }
+
+  double solid_volume() const;  // sum H_s dA, m^3
+  double fluid_volume() const;
+  double solid_outflow() const { return outflow_s_; }  // left through open edges
+  double fluid_outflow() const { return outflow_f_; }
+  double momentum_x() const;  // sum (rho_s H_s U_s + rho_f H_f U_f) dA
+  double momentum_y() const;
+  double max_speed() const;  // of either phase, horizontal
+
+ private:
+  // The six fields of a cell: each phase's depth and x, y momentum.
+  enum Field { kHs, kXs, kYs, kHf, kXf, kYf, kFields };
+  void update_earth_pressure();
+  void reconstruct(const TwoPhaseState& in);
+  void face_fluxes(const TwoPhaseState& in);
+  double euler_stage(const TwoPhaseState& in, TwoPhaseState& out, double dt, double* fluid_out);
+
+  Terrain terrain_;
+  TwoPhaseParams p_;
+  TwoPhaseState s_, stage_, stage2_;
+  double gamma_ = 0.0;
+  std::vector<double> k_;         // earth-pressure coefficient per cell
+  std::vector<double> g_solid_;   // the solid's pressure coefficient per cell
+  std::vector<double> g_remain_;  // its bed coefficient beyond that
+  double k_active_ = 1.0, k_passive_ = 1.0;
+  double outflow_s_ = 0.0, outflow_f_ = 0.0;
+  // Per stage: primitive values, limited slopes (x, y) of H_s, H_f, the
+  // surface and the four velocities, face fluxes with the hydrostatic
+  // corrections of each side, the solid's held flags.
+  std::vector<double> us_, vs_, uf_, vf_, eta_;
+  std::vector<double> sx_[7], sy_[7];
+  std::vector<double> fx_[kFields], fy_[kFields];
+  std::vector<double> cxl_[2], cxr_[2], cyl_[2], cyr_[2];  // solid, fluid normal momentum
+  std::vector<unsigned char> held_;
+  DomainEdges domain_;
+};
+
+}  // namespace talus::runout
