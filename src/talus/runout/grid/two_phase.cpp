@@ -49,9 +49,9 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   const double cut_l = hl > 0.0 ? hl_star / hl : 0.0, cut_r = hr > 0.0 ? hr_star / hr : 0.0;
   const double hsl = L.hs * cut_l, hfl = L.hf * cut_l, hsr = R.hs * cut_r, hfr = R.hf * cut_r;
   out.left[0] = 0.5 * L.gs * (L.hs * hl - hsl * hl_star);
-  out.left[1] = 0.5 * g * (L.hf * hl - hfl * hl_star);
+  out.left[1] = 0.5 * g * (L.hf * L.hf - hfl * hfl);
   out.right[0] = 0.5 * R.gs * (R.hs * hr - hsr * hr_star);
-  out.right[1] = 0.5 * g * (R.hf * hr - hfr * hr_star);
+  out.right[1] = 0.5 * g * (R.hf * R.hf - hfr * hfr);
   const bool wet[4] = {hsl > dry, hfl > dry, hsr > dry, hfr > dry};
   const bool wet_l = wet[0] || wet[1], wet_r = wet[2] || wet[3];
   if (!wet_l && !wet_r) return out;
@@ -70,9 +70,9 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   const double ul[6] = {hsl, hsl * u[0], hsl * v[0], hfl, hfl * u[1], hfl * v[1]};
   const double ur[6] = {hsr, hsr * u[2], hsr * v[2], hfr, hfr * u[3], hfr * v[3]};
   const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * hl_star, ul[1] * v[0],
-                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hl_star,    ul[4] * v[1]};
+                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,    ul[4] * v[1]};
   const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * hr_star, ur[1] * v[2],
-                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hr_star,    ur[4] * v[3]};
+                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,    ur[4] * v[3]};
   if (sl >= 0.0) {
     std::copy(fl, fl + 6, out.f);
   } else if (sr <= 0.0) {
@@ -93,6 +93,85 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
 inline double implicit_keep(double a, double b, double w) {
   const double one_a = 1.0 + a;
   return 2.0 / (one_a + std::sqrt(one_a * one_a + 4.0 * b * w));
+}
+
+// One cell after the explicit part of a stage: each phase's depth and
+// momentum per unit of its density (H_p U_p).
+struct Column {
+  double hs, hf;
+  double ms[2], mf[2];
+};
+
+// The stage's implicit sources of a cell, each already times dt: the drag
+// (dt H C), the solid's Coulomb friction (per unit solid density), the
+// fluid's laminar (linear) and Manning (quadratic) resistance; the virtual
+// mass factor r with the relative velocity at the stage's start.
+struct ColumnSources {
+  double rho_s = 0.0, rho_f = 0.0;
+  int exponent = 1;
+  double drag = 0.0, friction = 0.0, fluid_linear = 0.0, fluid_quadratic = 0.0;
+  double virtual_mass = 1.0, rel_before[2] = {0.0, 0.0};
+};
+
+// In this order: the fluid's resistance; the drag, implicit in the relative
+// velocity (momentum conserving); the solid's friction as an impulse shared
+// through that implicit drag (it stops the solid, never reverses it); then
+// virtual mass scales the stage's change of the relative velocity. With the
+// friction inside the implicit coupling, the slip at which a constant force
+// difference balances the drag is the stage's fixed point exactly.
+// solid / fluid: the phase moves (wet and not held by friction).
+void apply_sources(Column& col, const ColumnSources& src, bool solid, bool fluid) {
+  if (fluid) {
+    const double w = std::hypot(col.mf[0], col.mf[1]) / col.hf;
+    const double keep = implicit_keep(src.fluid_linear, src.fluid_quadratic, w);
+    col.mf[0] *= keep, col.mf[1] *= keep;
+  }
+  if (!solid && !fluid) return;
+  const double m_s = src.rho_s * col.hs, m_f = src.rho_f * col.hf;
+  if (!solid) {  // a still solid (held, or none): drag on the fluid alone
+    if (src.drag == 0.0) return;
+    const double a = src.drag / m_f, w = std::hypot(col.mf[0], col.mf[1]) / col.hf;
+    const double keep = src.exponent == 2 ? implicit_keep(0.0, a, w) : implicit_keep(a, 0.0, w);
+    col.mf[0] *= keep, col.mf[1] *= keep;
+    return;
+  }
+  double us[2] = {col.ms[0] / col.hs, col.ms[1] / col.hs};
+  if (!fluid) {
+    const double w = std::hypot(us[0], us[1]), impulse = src.friction / col.hs;
+    const double scale = w > impulse ? 1.0 - impulse / w : 0.0;
+    col.ms[0] *= scale, col.ms[1] *= scale;
+    return;
+  }
+  double uf[2] = {col.mf[0] / col.hf, col.mf[1] / col.hf};
+  const double total = m_s + m_f;
+  const double rel[2] = {uf[0] - us[0], uf[1] - us[1]};
+  const double a = src.drag * (1.0 / m_s + 1.0 / m_f), w = std::hypot(rel[0], rel[1]);
+  const double keep = src.exponent == 2 ? implicit_keep(0.0, a, w) : implicit_keep(a, 0.0, w);
+  for (int k = 0; k < 2; ++k) {
+    const double p = m_s * us[k] + m_f * uf[k];
+    us[k] = (p - m_f * keep * rel[k]) / total;
+    uf[k] = us[k] + keep * rel[k];
+  }
+  // An impulse j on the solid, with the drag implicit, changes its velocity
+  // by j beta: beta = (1 - (1 - keep) m_f / (m_s + m_f)) / m_s.
+  const double beta = (1.0 - (1.0 - keep) * m_f / total) / m_s;
+  const double w_s = std::hypot(us[0], us[1]);
+  if (w_s > 0.0 && src.friction > 0.0) {
+    const double j = std::min(src.rho_s * src.friction, w_s / beta);
+    for (int k = 0; k < 2; ++k) {
+      const double impulse = -j * us[k] / w_s;
+      us[k] += beta * impulse;
+      uf[k] += (1.0 - m_s * beta) * impulse / m_f;
+    }
+  }
+  if (src.virtual_mass < 1.0)
+    for (int k = 0; k < 2; ++k) {
+      const double p = m_s * us[k] + m_f * uf[k];
+      const double r = src.rel_before[k] + src.virtual_mass * (uf[k] - us[k] - src.rel_before[k]);
+      us[k] = (p - m_f * r) / total;
+      uf[k] = us[k] + r;
+    }
+  for (int k = 0; k < 2; ++k) col.ms[k] = us[k] * col.hs, col.mf[k] = uf[k] * col.hf;
 }
 
 // The fields reconstructed per cell, in the order of the slope arrays.
@@ -133,6 +212,7 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
     cxl_[m].assign(nfx, 0.0), cxr_[m].assign(nfx, 0.0), cyl_[m].assign(nfy, 0.0),
         cyr_[m].assign(nfy, 0.0);
   held_.assign(n, 0);
+  supply_[0].assign(n, 1.0), supply_[1].assign(n, 1.0);
   domain_ = find_domain_edges(terrain_);
   update_earth_pressure();
 }
@@ -243,7 +323,7 @@ void TwoPhaseSolver::update_earth_pressure() {
         if (div < 0.0) k_[c] = k_passive_;
       }
       const double c2 = dom[c] ? terrain_.cos2()[c] : 1.0;
-      g_solid_[c] = gam * grav + k_[c] * (1.0 - gam) * grav * c2 * c2;
+      g_solid_[c] = k_[c] * (1.0 - gam) * grav * c2 * c2;
       g_remain_[c] = (1.0 - gam) * grav * (c2 - k_[c] * c2 * c2);
     }
   }
@@ -347,6 +427,60 @@ void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
   }
 }
 
+void TwoPhaseSolver::limit_outflow(const TwoPhaseState& in, double dt) {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const double rx = dt / g.dx, ry = dt / g.dy;
+  const auto& dom = terrain_.inside();
+  // Per cell and phase: the share of what leaves through its faces that its
+  // depth can supply (1 where it can supply all). No solid leaves through a
+  // face between two quiet cells (the update skips those faces).
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j) {
+    for (Index i = 0; i < nx; ++i) {
+      const Index c = j * nx + i, w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
+      if (!dom[c]) continue;
+      const bool q = held_[c] != 0;
+      const bool open[4] = {!(q && (i == 0 || held_[c - 1])), !(q && (i == nx - 1 || held_[c + 1])),
+                            !(q && (j == 0 || held_[c - nx])), !(q && (j == ny - 1 || held_[c + nx]))};
+      for (int phase = 0; phase < 2; ++phase) {
+        const int m = phase == 0 ? kHs : kHf;
+        const bool solid = phase == 0;
+        const double leaving =
+            rx * ((!solid || open[1] ? std::max(0.0, fx_[m][e]) : 0.0) +
+                  (!solid || open[0] ? std::max(0.0, -fx_[m][w]) : 0.0)) +
+            ry * ((!solid || open[3] ? std::max(0.0, fy_[m][n]) : 0.0) +
+                  (!solid || open[2] ? std::max(0.0, -fy_[m][s]) : 0.0));
+        const double depth = solid ? in.hs[c] : in.hf[c];
+        supply_[phase][c] = leaving > depth ? depth / leaving : 1.0;
+      }
+    }
+  }
+  // Each face's fluxes of a phase scaled by the share of the cell they leave.
+  auto scale = [&](std::vector<double>* f, Index k, Index left, Index right, bool has_l,
+                   bool has_r) {
+    for (int phase = 0; phase < 2; ++phase) {
+      const int m = phase == 0 ? kHs : kHf;
+      const Index from = f[m][k] > 0.0 ? (has_l ? left : right) : (has_r ? right : left);
+      const double share = supply_[phase][from];
+      if (share < 1.0)
+        for (int q = m; q < m + 3; ++q) f[q][k] *= share;
+    }
+  };
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < ny; ++j)
+    for (Index f = 0; f <= nx; ++f) {
+      const bool has_l = f > 0 && dom[j * nx + f - 1], has_r = f < nx && dom[j * nx + f];
+      if (has_l || has_r) scale(fx_, j * (nx + 1) + f, j * nx + f - 1, j * nx + f, has_l, has_r);
+    }
+#pragma omp parallel for schedule(static)
+  for (Index f = 0; f <= ny; ++f)
+    for (Index i = 0; i < nx; ++i) {
+      const bool has_l = f > 0 && dom[(f - 1) * nx + i], has_r = f < ny && dom[f * nx + i];
+      if (has_l || has_r) scale(fy_, f * nx + i, (f - 1) * nx + i, f * nx + i, has_l, has_r);
+    }
+}
+
 double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, double dt,
                                    double* fluid_out) {
   const auto& g = terrain_.shape();
@@ -360,10 +494,6 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   const auto& cos2 = terrain_.cos2();
   reconstruct(in);
   face_fluxes(in);
-  auto solid_fraction = [&](Index c) {
-    const double h = in.hs[c] + in.hf[c];
-    return h > dry ? in.hs[c] / h : 0.0;
-  };
   // The explicit change of a cell's six fields over the stage: fluxes (the
   // solid's only through faces `open`: west, east, south, north), the
   // hydrostatic corrections, the interior bed terms of the reconstruction,
@@ -380,7 +510,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     d[kYs] -= ry * (open[3] * cyl_[0][n] - open[2] * cyr_[0][s]);
     d[kXf] -= rx * (cxl_[1][e] - cxr_[1][w]);
     d[kYf] -= ry * (cyl_[1][n] - cyr_[1][s]);
-    const double hs = in.hs[c], hf = in.hf[c], h = hs + hf;
+    const double hs = in.hs[c], hf = in.hf[c];
     if (p_.order == 2) {  // -c H_p (b_e - b_w) / dx, b_e - b_w = slope(surface) - slope(H)
       const double dbx = sx_[kSlopeSurface][c] - sx_[kSlopeHs][c] - sx_[kSlopeHf][c];
       const double dby = sy_[kSlopeSurface][c] - sy_[kSlopeHs][c] - sy_[kSlopeHf][c];
@@ -389,18 +519,23 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     }
     d[kXs] -= dt * g_remain_[c] * hs * bx[c];
     d[kYs] -= dt * g_remain_[c] * hs * by[c];
-    if (h <= dry) return;
-    // 1/2 c H^2 grad(alpha) with alpha at a face the mean of its two cells
-    // (a neighbour outside or dry counts as this cell).
-    const double a = solid_fraction(c);
-    auto fraction_at = [&](bool has, Index nb) {
-      return has && dom[nb] && in.hs[nb] + in.hf[nb] > dry ? solid_fraction(nb) : a;
+    // The phases push each other through the fluid's pressure: the fluid
+    // by the gradient of the solid's depth (its flux has its own depth
+    // only), the solid by buoyancy, gamma g grad(H + b). Centred; a
+    // neighbour outside the domain counts as this cell.
+    auto gradient = [&](const std::vector<double>& q, double step, bool has_lo, Index lo, bool has_hi,
+                        Index hi) {
+      const double at_lo = has_lo && dom[lo] ? q[lo] : q[c], at_hi = has_hi && dom[hi] ? q[hi] : q[c];
+      return 0.5 * (at_hi - at_lo) / step;
     };
-    const double dax = 0.5 * (fraction_at(i < nx - 1, c + 1) - fraction_at(i > 0, c - 1)) / g.dx;
-    const double day = 0.5 * (fraction_at(j < ny - 1, c + nx) - fraction_at(j > 0, c - nx)) / g.dy;
-    const double p = 0.5 * grav * h * h * dt;
-    d[kXs] += gam * p * dax, d[kYs] += gam * p * day;
-    d[kXf] -= p * dax, d[kYf] -= p * day;
+    if (hs > 0.0) {
+      d[kXs] -= dt * gam * grav * hs * gradient(eta_, g.dx, i > 0, c - 1, i < nx - 1, c + 1);
+      d[kYs] -= dt * gam * grav * hs * gradient(eta_, g.dy, j > 0, c - nx, j < ny - 1, c + nx);
+    }
+    if (hf > 0.0) {
+      d[kXf] -= dt * grav * hf * gradient(in.hs, g.dx, i > 0, c - 1, i < nx - 1, c + 1);
+      d[kYf] -= dt * grav * hf * gradient(in.hs, g.dy, j > 0, c - nx, j < ny - 1, c + nx);
+    }
   };
   auto viscosity = [&](double alpha_s) {
     return two_phase::julien_obrien_viscosity(p_.viscosity_alpha, p_.viscosity_beta, alpha_s);
@@ -437,6 +572,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       held_[c] = mx * mx + my * my <= hold * hold ? 1 : 0;
     }
   }
+  limit_outflow(in, dt);
   // Pass 2: the update. No solid crosses a face between two quiet cells.
   bool finite = true;
 #pragma omp parallel for schedule(static) reduction(&& : finite)
@@ -461,52 +597,24 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       if (!fluid_wet) mf[0] = mf[1] = 0.0;
       const double as = h > dry ? hs / h : 0.0;
       const double eta = viscosity(as);
-      // Drag and virtual mass: implicit in the relative velocity, momentum
-      // conserving (a held solid takes its share through the bed).
-      if (fluid_wet && hs > dry) {
-        const double c_drag = two_phase::drag_coefficient(p_.drag, as, 1.0 - as, eta);
-        const double m_s = rho_s * hs, m_f = rho_f * hf;
-        if (solid_wet) {
-          double rel[2] = {mf[0] / hf - ms[0] / hs, mf[1] / hf - ms[1] / hs};
-          const double a = h * c_drag * (1.0 / m_s + 1.0 / m_f);
-          const double speed = std::hypot(rel[0], rel[1]);
-          const double keep =
-              J == 2 ? implicit_keep(0.0, dt * a, speed) : implicit_keep(dt * a, 0.0, speed);
-          double next[2] = {rel[0] * keep, rel[1] * keep};
-          if (p_.virtual_mass && hs0 > dry && hf0 > dry) {
-            const double r = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
-            const double before[2] = {in.hfu[c] / hf0 - in.hsu[c] / hs0,
-                                      in.hfv[c] / hf0 - in.hsv[c] / hs0};
-            for (int k = 0; k < 2; ++k) next[k] = before[k] + r * (next[k] - before[k]);
-          }
-          for (int k = 0; k < 2; ++k) {
-            const double change = next[k] - rel[k];
-            ms[k] -= hs * m_f / (m_s + m_f) * change;
-            mf[k] += hf * m_s / (m_s + m_f) * change;
-          }
-        } else {
-          const double a = dt * h * c_drag / m_f;
-          const double keep = J == 2 ? implicit_keep(0.0, a, std::hypot(mf[0], mf[1]) / hf)
-                                     : implicit_keep(a, 0.0, 0.0);
-          mf[0] *= keep, mf[1] *= keep;
-        }
-      }
-      // The solid's Coulomb friction on its buoyant weight (of the stage's
-      // input depth, as fv2d): it stops a cell, never reverses it.
-      if (solid_wet) {
-        const double impulse = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs0;
-        const double m = std::hypot(ms[0], ms[1]);
-        const double scale = m > impulse ? 1.0 - impulse / m : 0.0;
-        ms[0] *= scale, ms[1] *= scale;
-      }
-      // The fluid's Manning and laminar resistance, implicit in the speed.
+      Column col{hs, hf, {ms[0], ms[1]}, {mf[0], mf[1]}};
+      ColumnSources src;
+      src.rho_s = rho_s, src.rho_f = rho_f, src.exponent = J;
+      if (fluid_wet && hs > dry)
+        src.drag = dt * h * two_phase::drag_coefficient(p_.drag, as, 1.0 - as, eta);
+      if (solid_wet)
+        src.friction = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs0;
       if (fluid_wet) {
-        const double laminar = rho_f > 0.0 ? p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
-        const double manning = grav * p_.manning * p_.manning / (h * std::cbrt(h));
-        const double keep =
-            implicit_keep(dt * laminar, dt * manning, std::hypot(mf[0], mf[1]) / hf);
-        mf[0] *= keep, mf[1] *= keep;
+        src.fluid_linear = rho_f > 0.0 ? dt * p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
+        src.fluid_quadratic = dt * grav * p_.manning * p_.manning / (h * std::cbrt(h));
       }
+      if (p_.virtual_mass && solid_wet && fluid_wet && hs0 > dry && hf0 > dry) {
+        src.virtual_mass = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
+        src.rel_before[0] = in.hfu[c] / hf0 - in.hsu[c] / hs0;
+        src.rel_before[1] = in.hfv[c] / hf0 - in.hsv[c] / hs0;
+      }
+      apply_sources(col, src, solid_wet, fluid_wet);
+      ms[0] = col.ms[0], ms[1] = col.ms[1], mf[0] = col.mf[0], mf[1] = col.mf[1];
       out.hsu[c] = ms[0], out.hsv[c] = ms[1], out.hfu[c] = mf[0], out.hfv[c] = mf[1];
       if (!std::isfinite(h) || !std::isfinite(ms[0] + ms[1] + mf[0] + mf[1])) finite = false;
     }

@@ -108,6 +108,8 @@ class TwoPhaseSolver {
   void update_earth_pressure();
   void reconstruct(const TwoPhaseState& in);
   void face_fluxes(const TwoPhaseState& in);
+  // Scales each phase's fluxes out of a cell down to what its depth holds.
+  void limit_outflow(const TwoPhaseState& in, double dt);
   double euler_stage(const TwoPhaseState& in, TwoPhaseState& out, double dt, double* fluid_out);
 
   Terrain terrain_;
@@ -127,6 +129,7 @@ class TwoPhaseSolver {
   std::vector<double> fx_[kFields], fy_[kFields];
   std::vector<double> cxl_[2], cxr_[2], cyl_[2], cyr_[2];  // solid, fluid normal momentum
   std::vector<unsigned char> held_;
+  std::vector<double> supply_[2];  // per phase: the share of its outflow a cell can supply
   DomainEdges domain_;
 };
 
