@@ -70,9 +70,9 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   const double ul[6] = {hsl, hsl * u[0], hsl * v[0], hfl, hfl * u[1], hfl * v[1]};
   const double ur[6] = {hsr, hsr * u[2], hsr * v[2], hfr, hfr * u[3], hfr * v[3]};
   const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * hl_star, ul[1] * v[0],
-                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,    ul[4] * v[1]};
+                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,        ul[4] * v[1]};
   const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * hr_star, ur[1] * v[2],
-                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,    ur[4] * v[3]};
+                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,        ur[4] * v[3]};
   if (sl >= 0.0) {
     std::copy(fl, fl + 6, out.f);
   } else if (sr <= 0.0) {
@@ -442,15 +442,15 @@ void TwoPhaseSolver::limit_outflow(const TwoPhaseState& in, double dt) {
       if (!dom[c]) continue;
       const bool q = held_[c] != 0;
       const bool open[4] = {!(q && (i == 0 || held_[c - 1])), !(q && (i == nx - 1 || held_[c + 1])),
-                            !(q && (j == 0 || held_[c - nx])), !(q && (j == ny - 1 || held_[c + nx]))};
+                            !(q && (j == 0 || held_[c - nx])),
+                            !(q && (j == ny - 1 || held_[c + nx]))};
       for (int phase = 0; phase < 2; ++phase) {
         const int m = phase == 0 ? kHs : kHf;
         const bool solid = phase == 0;
-        const double leaving =
-            rx * ((!solid || open[1] ? std::max(0.0, fx_[m][e]) : 0.0) +
-                  (!solid || open[0] ? std::max(0.0, -fx_[m][w]) : 0.0)) +
-            ry * ((!solid || open[3] ? std::max(0.0, fy_[m][n]) : 0.0) +
-                  (!solid || open[2] ? std::max(0.0, -fy_[m][s]) : 0.0));
+        const double leaving = rx * ((!solid || open[1] ? std::max(0.0, fx_[m][e]) : 0.0) +
+                                     (!solid || open[0] ? std::max(0.0, -fx_[m][w]) : 0.0)) +
+                               ry * ((!solid || open[3] ? std::max(0.0, fy_[m][n]) : 0.0) +
+                                     (!solid || open[2] ? std::max(0.0, -fy_[m][s]) : 0.0));
         const double depth = solid ? in.hs[c] : in.hf[c];
         supply_[phase][c] = leaving > depth ? depth / leaving : 1.0;
       }
@@ -523,9 +523,10 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     // by the gradient of the solid's depth (its flux has its own depth
     // only), the solid by buoyancy, gamma g grad(H + b). Centred; a
     // neighbour outside the domain counts as this cell.
-    auto gradient = [&](const std::vector<double>& q, double step, bool has_lo, Index lo, bool has_hi,
-                        Index hi) {
-      const double at_lo = has_lo && dom[lo] ? q[lo] : q[c], at_hi = has_hi && dom[hi] ? q[hi] : q[c];
+    auto gradient = [&](const std::vector<double>& q, double step, bool has_lo, Index lo,
+                        bool has_hi, Index hi) {
+      const double at_lo = has_lo && dom[lo] ? q[lo] : q[c],
+                   at_hi = has_hi && dom[hi] ? q[hi] : q[c];
       return 0.5 * (at_hi - at_lo) / step;
     };
     if (hs > 0.0) {
@@ -602,8 +603,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       src.rho_s = rho_s, src.rho_f = rho_f, src.exponent = J;
       if (fluid_wet && hs > dry)
         src.drag = dt * h * two_phase::drag_coefficient(p_.drag, as, 1.0 - as, eta);
-      if (solid_wet)
-        src.friction = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs0;
+      if (solid_wet) src.friction = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs0;
       if (fluid_wet) {
         src.fluid_linear = rho_f > 0.0 ? dt * p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
         src.fluid_quadratic = dt * grav * p_.manning * p_.manning / (h * std::cbrt(h));

@@ -28,26 +28,37 @@
 // (chi eta U / H is the bed shear of a laminar sheet; 3 for a parabolic
 // profile, Iverson & Denlinger 2001).
 //
-// The discretisation (docs/design.md, "The two-phase solver"):
-// - The pressure terms -c grad(1/2 alpha H^2) are fluxes and the bed terms
-//   -c alpha H grad(b) are taken by hydrostatic reconstruction (Audusse et
-//   al. 2004) with second-order interior terms, so a lake at rest over any bed
-//   stays at rest to round-off (well-balanced). What the solid's bed term
-//   has beyond its pressure coefficient is added with the terrain's slope,
-//   and the non-conservative parts 1/2 c H^2 grad(alpha) centred.
-// - Face states: each phase's depth, the free surface H + b and the velocities
-//   are reconstructed (limited), so a phase absent on both sides of a face
-//   has no flux; HLL with wave speeds covering both phases.
-// - Stiff sources implicitly, after the explicit update of a stage: the drag
-//   (exactly momentum-conserving; the relative velocity decays as
-//   1 / (1 + dt a |dU|^(J-1)), never reversing), then virtual mass (scales
-//   the stage's change of the relative velocity by r, finite as alpha_f -> 0),
-//   then the solid's Coulomb friction (stops, never reverses; a solid at rest
-//   stays held while friction can hold it, as in fv2d) and the fluid's
-//   Manning and laminar resistance (implicit in the speed). None of these
-//   limits the step, so alpha_s or alpha_f -> 0 does not make it stiff.
+// The discretisation:
+// - Fluxes: the fluid's pressure 1/2 g H_f^2 (its own depth; the rest of
+//   -g H_f grad(H), -g H_f grad(H_s), is a centred source, as is the solid's
+//   buoyancy -gamma g H_s grad(H + b)), the solid's 1/2 k (1 - gamma) g cos^4
+//   H_s H. HLL with wave speeds covering both phases, from reconstructed
+//   (limited) phase depths, free surface and velocities.
+// - The bed by hydrostatic reconstruction (Audusse et al. 2004) with the
+//   second-order interior terms: a lake at rest over any bed, dry islands
+//   included, stays at rest to round-off. The solid's bed coefficient beyond
+//   its pressure coefficient is added with the terrain's slope.
+// - Each phase's fluxes out of a cell are scaled down to what the cell holds
+//   (depths never negative, mass still exact: fluxes cancel pairwise).
+// - Stiff sources implicitly, after the explicit update of a stage (see
+//   apply_sources in the .cpp): the fluid's Manning and laminar resistance,
+//   the drag (momentum conserving, implicit in the relative velocity), the
+//   solid's Coulomb friction as an impulse shared through that implicit drag
+//   (stops, never reverses; a solid at rest stays held while friction can
+//   hold it against fluxes, gravity and drag, as in fv2d), then virtual
+//   mass, which scales the stage's change of the relative velocity by r
+//   (finite as alpha_f -> 0). None of these limits the step, so alpha_s or
+//   alpha_f -> 0 does not make it stiff. A constant force difference against
+//   the drag is balanced at the exact terminal slip; relaxation towards it is
+//   first order in time.
 // - Virtual mass is applied to the change of each phase's cell velocity over
 //   a stage (local, not material, acceleration).
+// Known limitation: where the limited surface slopes of two neighbours place
+// the bed at their common face at heights further apart than a thin layer is
+// deep (curved, steep terrain), hydrostatic reconstruction cuts that layer's
+// flux to zero while gravity keeps accelerating it (velocities of mm-thin
+// cells grow without moving mass). To be replaced by a reconstruction with
+// one bed value per face.
 #include <vector>
 
 #include "talus/runout/earth_pressure.hpp"
