@@ -52,6 +52,25 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   out.left[1] = 0.5 * g * (L.hf * L.hf - hfl * hfl);
   out.right[0] = 0.5 * R.gs * (R.hs * hr - hsr * hr_star);
   out.right[1] = 0.5 * g * (R.hf * R.hf - hfr * hfr);
+  // A wet side whose mixture the cut removes entirely, next to a wet side,
+  // meets a step higher than its surface between two parts of the flow:
+  // for it the face is a wall, and beyond the pressure above the wall's
+  // reaction stops what moves into it (the momentum flux of HLL between the
+  // side and its mirror image, h u (2 |u| + c)). The reconstruction makes
+  // such steps where the two cells place the bed at their face further apart
+  // than a thin layer is deep (curved terrain); without the reaction that
+  // layer kept accelerating without moving. At a front (the other side dry)
+  // the cut is no wall: the flow advances onto the dry bed.
+  if (hl > dry && hr > dry && hl_star == 0.0) {
+    const double c = std::sqrt(std::max(g, L.gs) * hl);
+    if (L.us > 0.0) out.left[0] += L.hs * L.us * (2.0 * L.us + c);
+    if (L.uf > 0.0) out.left[1] += L.hf * L.uf * (2.0 * L.uf + c);
+  }
+  if (hl > dry && hr > dry && hr_star == 0.0) {
+    const double c = std::sqrt(std::max(g, R.gs) * hr);
+    if (R.us < 0.0) out.right[0] += R.hs * R.us * (2.0 * R.us - c);
+    if (R.uf < 0.0) out.right[1] += R.hf * R.uf * (2.0 * R.uf - c);
+  }
   const bool wet[4] = {hsl > dry, hfl > dry, hsr > dry, hfr > dry};
   const bool wet_l = wet[0] || wet[1], wet_r = wet[2] || wet[3];
   if (!wet_l && !wet_r) return out;
@@ -214,6 +233,17 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
   held_.assign(n, 0);
   supply_[0].assign(n, 1.0), supply_[1].assign(n, 1.0);
   domain_ = find_domain_edges(terrain_);
+  for (int k = 0; k < 2; ++k)
+    depth_x_[k].assign(n, 0.0), depth_y_[k].assign(n, 0.0), share_x_[k].assign(n, 0.0),
+        share_y_[k].assign(n, 0.0);
+  // The bed's central slopes (per cell, in cell units) where the limited
+  // slopes are taken; 0 where they are not.
+  bed_slope_x_.assign(n, 0.0), bed_slope_y_.assign(n, 0.0);
+  const auto& b = terrain_.elevation();
+  for (std::size_t c = 0; c < n; ++c) {
+    if (domain_.interior[c] & 1) bed_slope_x_[c] = 0.5 * (b[c + 1] - b[c - 1]);
+    if (domain_.interior[c] & 2) bed_slope_y_[c] = 0.5 * (b[c + g.nx] - b[c - g.nx]);
+  }
   update_earth_pressure();
 }
 
@@ -358,34 +388,76 @@ void TwoPhaseSolver::reconstruct(const TwoPhaseState& in) {
         sy[c] = limited_slope(q[c] - q[c - nx], q[c + nx] - q[c]);
     }
   }
-  if (!terrain_.has_outside()) return;
+  if (terrain_.has_outside()) {
 #pragma omp parallel for schedule(static)
-  for (Index c = 0; c < nx * ny; ++c)
-    for (int k = 0; k < 7; ++k) {
-      if (!(domain_.interior[c] & 1)) sx_[k][c] = 0.0;
-      if (!(domain_.interior[c] & 2)) sy_[k][c] = 0.0;
-    }
+    for (Index c = 0; c < nx * ny; ++c)
+      for (int k = 0; k < 7; ++k) {
+        if (!(domain_.interior[c] & 1)) sx_[k][c] = 0.0;
+        if (!(domain_.interior[c] & 2)) sy_[k][c] = 0.0;
+      }
+  }
+  side_depths(in);
 }
 
-void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
+void TwoPhaseSolver::side_depths(const TwoPhaseState& in) {
+  const Index n = static_cast<Index>(terrain_.shape().cells());
+  const bool second = p_.order == 2;
+  // The mixture's depth at a cell's two sides along an axis: its surface
+  // slope less the bed's central slope (so the bed at a face is nearly the
+  // same seen from either side: exact for beds quadratic over three cells;
+  // with the depth's own limited slope a thin layer on curved steep ground
+  // met a step at a face deeper than itself and stuck). Where a side would
+  // be negative it is 0 and the other twice the cell's (Kurganov & Petrova
+  // 2007: the cell's mean kept). The phases share a side's depth as their
+  // own limited reconstructions do.
+  auto sides = [&](Index c, const std::vector<double>* s, const std::vector<double>& bed_slope,
+                   std::vector<double>* depth, std::vector<double>* share) {
+    const double hs = in.hs[c], hf = in.hf[c], h = hs + hf;
+    const double half = second ? 0.5 * (s[kSlopeSurface][c] - bed_slope[c]) : 0.0;
+    double minus = h - half, plus = h + half;
+    if (!(h > 0.0)) {
+      minus = plus = 0.0;
+    } else if (plus < 0.0) {
+      plus = 0.0, minus = 2.0 * h;
+    } else if (minus < 0.0) {
+      minus = 0.0, plus = 2.0 * h;
+    }
+    depth[0][c] = minus, depth[1][c] = plus;
+    for (int k = 0; k < 2; ++k) {
+      const double sign = k == 0 ? -1.0 : 1.0;
+      const double hs_rec = second ? hs + 0.5 * sign * s[kSlopeHs][c] : hs;
+      const double hf_rec = second ? hf + 0.5 * sign * s[kSlopeHf][c] : hf;
+      share[k][c] = hs_rec + hf_rec > 0.0 ? hs_rec / (hs_rec + hf_rec) : (h > 0.0 ? hs / h : 0.0);
+    }
+  };
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < n; ++c) {
+    sides(c, sx_, bed_slope_x_, depth_x_, share_x_);
+    sides(c, sy_, bed_slope_y_, depth_y_, share_y_);
+  }
+}
+
+void TwoPhaseSolver::face_fluxes() {
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
   const double dry = p_.dry_depth, grav = p_.drag.gravity;
   const GridBoundary bc = p_.boundary;
   const auto& dom = terrain_.inside();
-  // A cell's side at a face, half a cell along its slopes (sign +1: its
-  // east / north side, -1: west / south); in the frame of a face normal to y
-  // the normal velocity is v.
-  auto side = [&](Index c, double sign, const std::vector<double>* s, bool normal_y) {
-    const double hs = in.hs[c] + 0.5 * sign * s[kSlopeHs][c];
-    const double hf = in.hf[c] + 0.5 * sign * s[kSlopeHf][c];
+  // A cell's side at a face (k = 1: its east / north side, 0: west /
+  // south) in the face's frame (the normal velocity is v on a face normal to
+  // y): depths from side_depths, the bed where the reconstructed surface
+  // puts it, velocities along their limited slopes.
+  auto side = [&](Index c, int k, const std::vector<double>* s, bool normal_y) {
+    const double sign = k == 1 ? 1.0 : -1.0;
+    const double depth = normal_y ? depth_y_[k][c] : depth_x_[k][c];
+    const double hs = depth * (normal_y ? share_y_[k][c] : share_x_[k][c]), hf = depth - hs;
     const double surface = eta_[c] + 0.5 * sign * s[kSlopeSurface][c];
     const double us = us_[c] + 0.5 * sign * s[kSlopeUs][c],
                  vs = vs_[c] + 0.5 * sign * s[kSlopeVs][c];
     const double uf = uf_[c] + 0.5 * sign * s[kSlopeUf][c],
                  vf = vf_[c] + 0.5 * sign * s[kSlopeVf][c];
-    return normal_y ? Side{hs, vs, us, hf, vf, uf, surface - hs - hf, g_solid_[c]}
-                    : Side{hs, us, vs, hf, uf, vf, surface - hs - hf, g_solid_[c]};
+    return normal_y ? Side{hs, vs, us, hf, vf, uf, surface - depth, g_solid_[c]}
+                    : Side{hs, us, vs, hf, uf, vf, surface - depth, g_solid_[c]};
   };
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < ny; ++j) {
@@ -395,8 +467,8 @@ void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
       FaceFlux flux;
       if (has_l || has_r) {
         Side L{}, R{};
-        if (has_l) L = side(j * nx + f - 1, 1.0, sx_, false);
-        if (has_r) R = side(j * nx + f, -1.0, sx_, false);
+        if (has_l) L = side(j * nx + f - 1, 1, sx_, false);
+        if (has_r) R = side(j * nx + f, 0, sx_, false);
         if (!has_l) L = ghost(R, bc);
         if (!has_r) R = ghost(L, bc);
         flux = face_flux(L, R, grav, dry);
@@ -413,8 +485,8 @@ void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
       FaceFlux flux;
       if (has_l || has_r) {
         Side L{}, R{};
-        if (has_l) L = side((f - 1) * nx + i, 1.0, sy_, true);
-        if (has_r) R = side(f * nx + i, -1.0, sy_, true);
+        if (has_l) L = side((f - 1) * nx + i, 1, sy_, true);
+        if (has_r) R = side(f * nx + i, 0, sy_, true);
         if (!has_l) L = ghost(R, bc);
         if (!has_r) R = ghost(L, bc);
         flux = face_flux(L, R, grav, dry);
@@ -451,7 +523,8 @@ void TwoPhaseSolver::limit_outflow(const TwoPhaseState& in, double dt) {
                                      (!solid || open[0] ? std::max(0.0, -fx_[m][w]) : 0.0)) +
                                ry * ((!solid || open[3] ? std::max(0.0, fy_[m][n]) : 0.0) +
                                      (!solid || open[2] ? std::max(0.0, -fy_[m][s]) : 0.0));
-        const double depth = solid ? in.hs[c] : in.hf[c];
+        // (A depth may be a round-off below 0 after an emptying: it supplies nothing.)
+        const double depth = std::max(0.0, solid ? in.hs[c] : in.hf[c]);
         supply_[phase][c] = leaving > depth ? depth / leaving : 1.0;
       }
     }
@@ -493,7 +566,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   const auto& dom = terrain_.inside();
   const auto& cos2 = terrain_.cos2();
   reconstruct(in);
-  face_fluxes(in);
+  face_fluxes();
   // The explicit change of a cell's six fields over the stage: fluxes (the
   // solid's only through faces `open`: west, east, south, north), the
   // hydrostatic corrections, the interior bed terms of the reconstruction,
@@ -511,11 +584,19 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     d[kXf] -= rx * (cxl_[1][e] - cxr_[1][w]);
     d[kYf] -= ry * (cyl_[1][n] - cyr_[1][s]);
     const double hs = in.hs[c], hf = in.hf[c];
-    if (p_.order == 2) {  // -c H_p (b_e - b_w) / dx, b_e - b_w = slope(surface) - slope(H)
-      const double dbx = sx_[kSlopeSurface][c] - sx_[kSlopeHs][c] - sx_[kSlopeHf][c];
-      const double dby = sy_[kSlopeSurface][c] - sy_[kSlopeHs][c] - sy_[kSlopeHf][c];
-      d[kXs] -= rx * g_solid_[c] * hs * dbx, d[kYs] -= ry * g_solid_[c] * hs * dby;
-      d[kXf] -= rx * grav * hf * dbx, d[kYf] -= ry * grav * hf * dby;
+    // -c (H_p,w + H_p,e) / 2 (b_e - b_w) / dx with the sides' beds: over a
+    // flat surface it balances the pressure of the fluxes and corrections
+    // exactly (Audusse et al.'s second-order interior term).
+    {
+      const double hx[2] = {depth_x_[0][c], depth_x_[1][c]},
+                   hy[2] = {depth_y_[0][c], depth_y_[1][c]};
+      const double dbx = sx_[kSlopeSurface][c] - (hx[1] - hx[0]);
+      const double dby = sy_[kSlopeSurface][c] - (hy[1] - hy[0]);
+      const double sxs = 0.5 * (hx[0] * share_x_[0][c] + hx[1] * share_x_[1][c]);
+      const double sys = 0.5 * (hy[0] * share_y_[0][c] + hy[1] * share_y_[1][c]);
+      const double sxf = 0.5 * (hx[0] + hx[1]) - sxs, syf = 0.5 * (hy[0] + hy[1]) - sys;
+      d[kXs] -= rx * g_solid_[c] * sxs * dbx, d[kYs] -= ry * g_solid_[c] * sys * dby;
+      d[kXf] -= rx * grav * sxf * dbx, d[kYf] -= ry * grav * syf * dby;
     }
     d[kXs] -= dt * g_remain_[c] * hs * bx[c];
     d[kYs] -= dt * g_remain_[c] * hs * by[c];
@@ -588,7 +669,8 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       double d[kFields];
       explicit_change(c, i, j, open, d);
       const double hs0 = in.hs[c], hf0 = in.hf[c];
-      const double hs = hs0 + d[kHs], hf = hf0 + d[kHf], h = hs + hf;
+      // A cell the outflow limit emptied can be a round-off below 0 (~1e-25 m): 0.
+      const double hs = std::max(0.0, hs0 + d[kHs]), hf = std::max(0.0, hf0 + d[kHf]), h = hs + hf;
       out.hs[c] = hs, out.hf[c] = hf;
       double ms[2] = {in.hsu[c] + d[kXs], in.hsv[c] + d[kYs]};
       double mf[2] = {in.hfu[c] + d[kXf], in.hfv[c] + d[kYf]};

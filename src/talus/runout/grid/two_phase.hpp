@@ -118,7 +118,8 @@ class TwoPhaseSolver {
   enum Field { kHs, kXs, kYs, kHf, kXf, kYf, kFields };
   void update_earth_pressure();
   void reconstruct(const TwoPhaseState& in);
-  void face_fluxes(const TwoPhaseState& in);
+  void side_depths(const TwoPhaseState& in);
+  void face_fluxes();
   // Scales each phase's fluxes out of a cell down to what its depth holds.
   void limit_outflow(const TwoPhaseState& in, double dt);
   double euler_stage(const TwoPhaseState& in, TwoPhaseState& out, double dt, double* fluid_out);
@@ -142,6 +143,10 @@ class TwoPhaseSolver {
   std::vector<unsigned char> held_;
   std::vector<double> supply_[2];  // per phase: the share of its outflow a cell can supply
   DomainEdges domain_;
+  // Per cell: the bed's central slopes; each axis' side depths (0: west /
+  // south, 1: east / north) and the solid's share of them.
+  std::vector<double> bed_slope_x_, bed_slope_y_;
+  std::vector<double> depth_x_[2], depth_y_[2], share_x_[2], share_y_[2];
 };
 
 }  // namespace talus::runout
