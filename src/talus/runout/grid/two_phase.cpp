@@ -690,7 +690,11 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
         src.fluid_linear = rho_f > 0.0 ? dt * p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
         src.fluid_quadratic = dt * grav * p_.manning * p_.manning / (h * std::cbrt(h));
       }
-      if (p_.virtual_mass && solid_wet && fluid_wet && hs0 > dry && hf0 > dry) {
+      // Virtual mass acts on a phase's acceleration: where most of a phase
+      // arrived during the stage, its change of cell velocity is mostly new
+      // material (and its velocity at the start, of a trace, meaningless).
+      if (p_.virtual_mass && solid_wet && fluid_wet && hs0 > dry && hf0 > dry && 2.0 * hs0 >= hs &&
+          2.0 * hf0 >= hf) {
         src.virtual_mass = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
         src.rel_before[0] = in.hfu[c] / hf0 - in.hsu[c] / hs0;
         src.rel_before[1] = in.hfv[c] / hf0 - in.hsv[c] / hs0;

@@ -51,14 +51,17 @@
 //   alpha_f -> 0 does not make it stiff. A constant force difference against
 //   the drag is balanced at the exact terminal slip; relaxation towards it is
 //   first order in time.
+// - A face between two wet cells whose reconstructed beds differ by more
+//   than a thin layer is deep (curved, steep ground) closes for that layer:
+//   there it acts as a wall (the layer's momentum into it is reflected) --
+//   without that, the layer accelerated in place without moving. The side
+//   depths take the bed's central slope (Kurganov & Petrova's positivity
+//   fix where a side would be negative), which makes such steps third-order
+//   small on smooth ground; a bed continuous across faces (Chen & Noelle
+//   2022) would remove them.
 // - Virtual mass is applied to the change of each phase's cell velocity over
-//   a stage (local, not material, acceleration).
-// Known limitation: where the limited surface slopes of two neighbours place
-// the bed at their common face at heights further apart than a thin layer is
-// deep (curved, steep terrain), hydrostatic reconstruction cuts that layer's
-// flux to zero while gravity keeps accelerating it (velocities of mm-thin
-// cells grow without moving mass). To be replaced by a reconstruction with
-// one bed value per face.
+//   a stage (local, not material, acceleration), where at least half of each
+//   phase was there at the stage's start.
 #include <vector>
 
 #include "talus/runout/earth_pressure.hpp"
