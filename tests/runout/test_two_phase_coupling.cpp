@@ -224,8 +224,9 @@ TEST(TwoPhaseCoupling, EachPhaseKeepsItsMassAndNothingOutrunsFreeFall) {
   const double vs = s.solid_volume(), vf = s.fluid_volume();
   // No part of the flow may outrun free fall from the highest surface to the
   // lowest bed, sqrt(2 g dz) (friction only slows it). Thin layers that the
-  // reconstruction's steps at faces between wet cells trapped did, before
-  // those steps acted as walls (33 m/s against the 31 m/s bound here).
+  // reconstruction's steps at faces between wet cells trapped did (33 m/s
+  // against the 31 m/s bound, with virtual mass on), before those steps
+  // acted as walls.
   double top = -1e9, bottom = 1e9;
   for (std::size_t c = 0; c < g.cells(); ++c)
     top = std::max(top, bed[c] + solid[c] + fluid[c]), bottom = std::min(bottom, bed[c]);
@@ -244,6 +245,91 @@ TEST(TwoPhaseCoupling, EachPhaseKeepsItsMassAndNothingOutrunsFreeFall) {
   EXPECT_NEAR(s.solid_volume(), vs, 1e-12 * vs);
   EXPECT_NEAR(s.fluid_volume(), vf, 1e-12 * vf);
   EXPECT_GE(min_depth, 0.0);
+}
+
+}  // namespace
+}  // namespace talus::runout
+
+namespace talus::runout {
+namespace {
+
+// A debris-flow release on a 25 deg plane (solid fraction 0.6, bed friction
+// 20 deg, Manning 0.03, drag, virtual mass, viscosity) on three grids.
+struct DebrisRun {
+  std::size_t nx, ny;
+  std::vector<double> hs, hf;
+  double centre_s, centre_f;  // x of each phase's centre of mass, m
+};
+
+DebrisRun debris_on_plane(double dx) {
+  const std::size_t nx = static_cast<std::size_t>(std::lround(20.0 / dx));
+  const std::size_t ny = static_cast<std::size_t>(std::lround(10.0 / dx));
+  GridShape g{nx, ny, dx, dx};
+  auto bed = sample(g, [](double x, double) { return -std::tan(deg2rad(25.0)) * x; });
+  auto mixture = sample(g, [](double x, double y) {
+    const double r2 = (x - 4.0) * (x - 4.0) + (y - 5.0) * (y - 5.0);
+    return std::max(0.0, 0.8 * (1.0 - r2 / 4.0));
+  });
+  std::vector<double> solid(g.cells()), fluid(g.cells());
+  for (std::size_t c = 0; c < g.cells(); ++c)
+    solid[c] = 0.6 * mixture[c], fluid[c] = 0.4 * mixture[c];
+  TwoPhaseParams p;
+  p.tan_basal_friction = std::tan(deg2rad(20.0));
+  // k = 1 (a liquefied mass): with Savage-Hutter's k_a / k_p the passive
+  // pressure holds the pile's upslope part by friction, and the edge of that
+  // held zone wears away faster the finer the grid -- fv2d alike (centre of
+  // mass 5.146 m at 0.125 m cells, 5.788 m at 0.0625 m for the dry pile);
+  // that is not what this test is about.
+  p.pressure.mode = EarthPressureMode::Constant;
+  p.pressure.constant = 1.0;
+  p.manning = 0.03, p.viscosity_alpha = 0.01, p.viscosity_beta = 10.0;
+  p.boundary = GridBoundary::Open;
+  TwoPhaseSolver s(Terrain(g, bed), p, solid, fluid);
+  run_to(s, 1.5);
+  DebrisRun r{nx, ny, s.state().hs, s.state().hf, 0.0, 0.0};
+  double ms = 0.0, mf = 0.0;
+  for (std::size_t c = 0; c < g.cells(); ++c) {
+    const double x = (c % nx + 0.5) * dx;
+    ms += r.hs[c], mf += r.hf[c], r.centre_s += r.hs[c] * x, r.centre_f += r.hf[c] * x;
+  }
+  r.centre_s /= ms, r.centre_f /= mf;
+  return r;
+}
+
+// L1 distance (m^3) between a run and the next finer one averaged onto its
+// cells (2 x 2 blocks), both phases.
+double distance_to_finer(const DebrisRun& coarse, const DebrisRun& fine, double dx) {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < coarse.ny; ++j)
+    for (std::size_t i = 0; i < coarse.nx; ++i) {
+      double s = 0.0, f = 0.0;
+      for (std::size_t dj = 0; dj < 2; ++dj)
+        for (std::size_t di = 0; di < 2; ++di) {
+          const std::size_t k = (2 * j + dj) * fine.nx + 2 * i + di;
+          s += 0.25 * fine.hs[k], f += 0.25 * fine.hf[k];
+        }
+      const std::size_t c = j * coarse.nx + i;
+      sum += (std::abs(coarse.hs[c] - s) + std::abs(coarse.hf[c] - f)) * dx * dx;
+    }
+  return sum;
+}
+
+TEST(TwoPhaseConvergence, DebrisReleaseOnAPlaneConvergesWithTheGrid) {
+  // No closed form: the runs on 0.5, 0.25 and 0.125 m cells are compared
+  // each with the next finer (self-convergence, L1 of both phases' depths).
+  // The distance must shrink with the cell size; the observed order is
+  // printed and asserted above 0.5 (fronts and friction's stop-or-move
+  // switch allow at most first order).
+  const DebrisRun r1 = debris_on_plane(0.5), r2 = debris_on_plane(0.25),
+                  r3 = debris_on_plane(0.125);
+  const double e1 = distance_to_finer(r1, r2, 0.5), e2 = distance_to_finer(r2, r3, 0.25);
+  const double released = 0.8 * M_PI * 4.0 / 2.0;  // paraboloid: pi R^2 h / 2
+  std::printf(
+      "debris on a plane: distances %.4f %.4f m^3 (of %.3f released), order %.2f; "
+      "centres solid %.4f %.4f %.4f, fluid %.4f %.4f %.4f m\n",
+      e1, e2, released, std::log2(e1 / e2), r1.centre_s, r2.centre_s, r3.centre_s, r1.centre_f,
+      r2.centre_f, r3.centre_f);
+  EXPECT_GT(std::log2(e1 / e2), 0.5);
 }
 
 }  // namespace

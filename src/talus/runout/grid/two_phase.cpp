@@ -17,16 +17,18 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // One side of a face in the face's frame: each phase's depth and normal /
 // tangential velocity, the bed there, the solid's pressure coefficient.
+// h: the mixture's depth (for the fluid's cut); gs: the solid's pressure
+// coefficient; gw: the wave speed's, c^2 = gw h.
 struct Side {
-  double hs, us, vs, hf, uf, vf, b, gs;
+  double hs, us, vs, hf, uf, vf, h, b, gs, gw;
 };
 
 // The fluxes of a face in its frame (per phase: depth, normal and tangential
-// momentum) and, per phase, the hydrostatic correction of the normal momentum
+// momentum) and the fluid's hydrostatic correction of its normal momentum
 // that the left and the right cell add (Audusse et al. 2004).
 struct FaceFlux {
   double f[6] = {0, 0, 0, 0, 0, 0};
-  double left[2] = {0, 0}, right[2] = {0, 0};
+  double left = 0.0, right = 0.0;
 };
 
 inline Side ghost(const Side& inside, GridBoundary b) {
@@ -36,46 +38,41 @@ inline Side ghost(const Side& inside, GridBoundary b) {
   return m;
 }
 
-// HLL with hydrostatic reconstruction: each side's mixture is cut to the
-// higher of the two beds (its phases in proportion), the HLL speeds cover
-// every phase present (the exact dry-front speed u + 2c towards a dry side,
-// as fv2d), and the pressure the cut removed returns as the side's correction.
+// HLL with wave speeds covering every phase present (the exact dry-front
+// speed u + 2c towards a dry side, as fv2d). The fluid by hydrostatic
+// reconstruction: each side's fluid is cut to the higher of the two beds (in
+// proportion to the mixture's depth there), and the pressure the cut removed
+// returns as the side's correction. The solid as fv2d takes it, uncut: its
+// bed term is a source with the terrain's slope (a solid at rest is held by
+// friction, not by a balance of discrete pressures, and its earth pressure
+// k, between k_a and k_p, would multiply any error of that balance).
 FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   FaceFlux out;
   const double b_star = std::max(L.b, R.b);
-  const double hl = L.hs + L.hf, hr = R.hs + R.hf;
-  const double hl_star = std::max(0.0, hl + L.b - b_star),
-               hr_star = std::max(0.0, hr + R.b - b_star);
-  const double cut_l = hl > 0.0 ? hl_star / hl : 0.0, cut_r = hr > 0.0 ? hr_star / hr : 0.0;
-  const double hsl = L.hs * cut_l, hfl = L.hf * cut_l, hsr = R.hs * cut_r, hfr = R.hf * cut_r;
-  out.left[0] = 0.5 * L.gs * (L.hs * hl - hsl * hl_star);
-  out.left[1] = 0.5 * g * (L.hf * L.hf - hfl * hfl);
-  out.right[0] = 0.5 * R.gs * (R.hs * hr - hsr * hr_star);
-  out.right[1] = 0.5 * g * (R.hf * R.hf - hfr * hfr);
-  // A wet side whose mixture the cut removes entirely, next to a wet side,
+  const double hl_star = std::max(0.0, L.h + L.b - b_star);
+  const double hr_star = std::max(0.0, R.h + R.b - b_star);
+  const double hfl = L.h > 0.0 ? L.hf * hl_star / L.h : 0.0;
+  const double hfr = R.h > 0.0 ? R.hf * hr_star / R.h : 0.0;
+  out.left = 0.5 * g * (L.hf * L.hf - hfl * hfl);
+  out.right = 0.5 * g * (R.hf * R.hf - hfr * hfr);
+  // Fluid on a wet side that the cut removes entirely, next to a wet side,
   // meets a step higher than its surface between two parts of the flow:
   // for it the face is a wall, and beyond the pressure above the wall's
   // reaction stops what moves into it (the momentum flux of HLL between the
   // side and its mirror image, h u (2 |u| + c)). The reconstruction makes
-  // such steps where the two cells place the bed at their face further apart
+  // such steps where two cells place the bed at their face further apart
   // than a thin layer is deep (curved terrain); without the reaction that
   // layer kept accelerating without moving. At a front (the other side dry)
   // the cut is no wall: the flow advances onto the dry bed.
-  if (hl > dry && hr > dry && hl_star == 0.0) {
-    const double c = std::sqrt(std::max(g, L.gs) * hl);
-    if (L.us > 0.0) out.left[0] += L.hs * L.us * (2.0 * L.us + c);
-    if (L.uf > 0.0) out.left[1] += L.hf * L.uf * (2.0 * L.uf + c);
-  }
-  if (hl > dry && hr > dry && hr_star == 0.0) {
-    const double c = std::sqrt(std::max(g, R.gs) * hr);
-    if (R.us < 0.0) out.right[0] += R.hs * R.us * (2.0 * R.us - c);
-    if (R.uf < 0.0) out.right[1] += R.hf * R.uf * (2.0 * R.uf - c);
-  }
+  if (L.hf > dry && R.h > dry && hl_star == 0.0 && L.uf > 0.0)
+    out.left += L.hf * L.uf * (2.0 * L.uf + std::sqrt(g * L.h));
+  if (R.hf > dry && L.h > dry && hr_star == 0.0 && R.uf < 0.0)
+    out.right += R.hf * R.uf * (2.0 * R.uf - std::sqrt(g * R.h));
+  const double hsl = L.hs, hsr = R.hs;
   const bool wet[4] = {hsl > dry, hfl > dry, hsr > dry, hfr > dry};
   const bool wet_l = wet[0] || wet[1], wet_r = wet[2] || wet[3];
   if (!wet_l && !wet_r) return out;
-  const double cl = std::sqrt(std::max(g, L.gs) * hl_star);
-  const double cr = std::sqrt(std::max(g, R.gs) * hr_star);
+  const double cl = std::sqrt(L.gw * L.h), cr = std::sqrt(R.gw * R.h);
   const double u[4] = {wet[0] ? L.us : 0.0, wet[1] ? L.uf : 0.0, wet[2] ? R.us : 0.0,
                        wet[3] ? R.uf : 0.0};
   const double v[4] = {wet[0] ? L.vs : 0.0, wet[1] ? L.vf : 0.0, wet[2] ? R.vs : 0.0,
@@ -88,10 +85,10 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   }
   const double ul[6] = {hsl, hsl * u[0], hsl * v[0], hfl, hfl * u[1], hfl * v[1]};
   const double ur[6] = {hsr, hsr * u[2], hsr * v[2], hfr, hfr * u[3], hfr * v[3]};
-  const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * hl_star, ul[1] * v[0],
-                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,        ul[4] * v[1]};
-  const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * hr_star, ur[1] * v[2],
-                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,        ur[4] * v[3]};
+  const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * L.h, ul[1] * v[0],
+                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,    ul[4] * v[1]};
+  const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * R.h, ur[1] * v[2],
+                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,    ur[4] * v[3]};
   if (sl >= 0.0) {
     std::copy(fl, fl + 6, out.f);
   } else if (sr <= 0.0) {
@@ -219,7 +216,7 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
   const auto lim = earth_pressure_limits(p_.pressure.phi_internal, p_.pressure.tan_phi_basal);
   k_active_ = lim.active, k_passive_ = lim.passive;
   k_.assign(n, initial_earth_pressure(p_.pressure));
-  g_solid_.resize(n), g_remain_.resize(n);
+  g_solid_.resize(n), g_bed_solid_.resize(n);
   set_state(s);
   stage_ = s_, stage2_ = s_;
   for (auto* a : {&us_, &vs_, &uf_, &vf_, &eta_}) a->assign(n, 0.0);
@@ -227,9 +224,7 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
   const auto& g = terrain_.shape();
   const std::size_t nfx = (g.nx + 1) * g.ny, nfy = g.nx * (g.ny + 1);
   for (int m = 0; m < kFields; ++m) fx_[m].assign(nfx, 0.0), fy_[m].assign(nfy, 0.0);
-  for (int m = 0; m < 2; ++m)
-    cxl_[m].assign(nfx, 0.0), cxr_[m].assign(nfx, 0.0), cyl_[m].assign(nfy, 0.0),
-        cyr_[m].assign(nfy, 0.0);
+  cxl_.assign(nfx, 0.0), cxr_.assign(nfx, 0.0), cyl_.assign(nfy, 0.0), cyr_.assign(nfy, 0.0);
   held_.assign(n, 0);
   supply_[0].assign(n, 1.0), supply_[1].assign(n, 1.0);
   domain_ = find_domain_edges(terrain_);
@@ -303,6 +298,12 @@ double TwoPhaseSolver::max_speed() const {
   return m;
 }
 
+double TwoPhaseSolver::wave_coefficient(std::size_t c, double fluid_depth) const {
+  // The solid's pressure and buoyancy, and the fluid's pressure where there is fluid.
+  const double solid = g_solid_[c] + gamma_ * p_.drag.gravity;
+  return fluid_depth > p_.dry_depth ? std::max(p_.drag.gravity, solid) : solid;
+}
+
 double TwoPhaseSolver::stable_time_step() const {
   const auto& g = terrain_.shape();
   const Index n = static_cast<Index>(g.cells());
@@ -314,7 +315,7 @@ double TwoPhaseSolver::stable_time_step() const {
     const double hs = s_.hs[c], hf = s_.hf[c];
     if (hs + hf <= dry) continue;
     wet = true;
-    const double a = std::sqrt(std::max(grav, g_solid_[c]) * (hs + hf));
+    const double a = std::sqrt(wave_coefficient(c, hf) * (hs + hf));
     if (hs > dry)
       rate = std::max(
           rate, (std::abs(s_.hsu[c] / hs) + a) / g.dx + (std::abs(s_.hsv[c] / hs) + a) / g.dy);
@@ -354,7 +355,7 @@ void TwoPhaseSolver::update_earth_pressure() {
       }
       const double c2 = dom[c] ? terrain_.cos2()[c] : 1.0;
       g_solid_[c] = k_[c] * (1.0 - gam) * grav * c2 * c2;
-      g_remain_[c] = (1.0 - gam) * grav * (c2 - k_[c] * c2 * c2);
+      g_bed_solid_[c] = (1.0 - gam) * grav * c2;
     }
   }
 }
@@ -437,7 +438,7 @@ void TwoPhaseSolver::side_depths(const TwoPhaseState& in) {
   }
 }
 
-void TwoPhaseSolver::face_fluxes() {
+void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
   const double dry = p_.dry_depth, grav = p_.drag.gravity;
@@ -450,14 +451,16 @@ void TwoPhaseSolver::face_fluxes() {
   auto side = [&](Index c, int k, const std::vector<double>* s, bool normal_y) {
     const double sign = k == 1 ? 1.0 : -1.0;
     const double depth = normal_y ? depth_y_[k][c] : depth_x_[k][c];
-    const double hs = depth * (normal_y ? share_y_[k][c] : share_x_[k][c]), hf = depth - hs;
+    const double hs = in.hs[c] + 0.5 * sign * s[kSlopeHs][c];  // limited, as fv2d
+    const double hf = depth * (1.0 - (normal_y ? share_y_[k][c] : share_x_[k][c]));
     const double surface = eta_[c] + 0.5 * sign * s[kSlopeSurface][c];
     const double us = us_[c] + 0.5 * sign * s[kSlopeUs][c],
                  vs = vs_[c] + 0.5 * sign * s[kSlopeVs][c];
     const double uf = uf_[c] + 0.5 * sign * s[kSlopeUf][c],
                  vf = vf_[c] + 0.5 * sign * s[kSlopeVf][c];
-    return normal_y ? Side{hs, vs, us, hf, vf, uf, surface - depth, g_solid_[c]}
-                    : Side{hs, us, vs, hf, uf, vf, surface - depth, g_solid_[c]};
+    const double gw = wave_coefficient(c, in.hf[c]);
+    return normal_y ? Side{hs, vs, us, hf, vf, uf, depth, surface - depth, g_solid_[c], gw}
+                    : Side{hs, us, vs, hf, uf, vf, depth, surface - depth, g_solid_[c], gw};
   };
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < ny; ++j) {
@@ -474,7 +477,7 @@ void TwoPhaseSolver::face_fluxes() {
         flux = face_flux(L, R, grav, dry);
       }
       for (int m = 0; m < kFields; ++m) fx_[m][k] = flux.f[m];
-      for (int m = 0; m < 2; ++m) cxl_[m][k] = flux.left[m], cxr_[m][k] = flux.right[m];
+      cxl_[k] = flux.left, cxr_[k] = flux.right;
     }
   }
 #pragma omp parallel for schedule(static)
@@ -494,7 +497,7 @@ void TwoPhaseSolver::face_fluxes() {
       // Back to x, y components: the face frame's normal momentum is y's.
       const int to_xy[kFields] = {kHs, kYs, kXs, kHf, kYf, kXf};
       for (int m = 0; m < kFields; ++m) fy_[to_xy[m]][k] = flux.f[m];
-      for (int m = 0; m < 2; ++m) cyl_[m][k] = flux.left[m], cyr_[m][k] = flux.right[m];
+      cyl_[k] = flux.left, cyr_[k] = flux.right;
     }
   }
 }
@@ -566,7 +569,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   const auto& dom = terrain_.inside();
   const auto& cos2 = terrain_.cos2();
   reconstruct(in);
-  face_fluxes();
+  face_fluxes(in);
   // The explicit change of a cell's six fields over the stage: fluxes (the
   // solid's only through faces `open`: west, east, south, north), the
   // hydrostatic corrections, the interior bed terms of the reconstruction,
@@ -579,27 +582,25 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       const double os = !solid || open[2], on = !solid || open[3];
       d[m] = -rx * (oe * fx_[m][e] - ow * fx_[m][w]) - ry * (on * fy_[m][n] - os * fy_[m][s]);
     }
-    d[kXs] -= rx * (open[1] * cxl_[0][e] - open[0] * cxr_[0][w]);
-    d[kYs] -= ry * (open[3] * cyl_[0][n] - open[2] * cyr_[0][s]);
-    d[kXf] -= rx * (cxl_[1][e] - cxr_[1][w]);
-    d[kYf] -= ry * (cyl_[1][n] - cyr_[1][s]);
+    d[kXf] -= rx * (cxl_[e] - cxr_[w]);
+    d[kYf] -= ry * (cyl_[n] - cyr_[s]);
     const double hs = in.hs[c], hf = in.hf[c];
-    // -c (H_p,w + H_p,e) / 2 (b_e - b_w) / dx with the sides' beds: over a
-    // flat surface it balances the pressure of the fluxes and corrections
-    // exactly (Audusse et al.'s second-order interior term).
+    // The fluid's bed: -g (H_f,w + H_f,e) / 2 (b_e - b_w) / dx with the
+    // sides' beds; over a flat surface it balances the pressure of the
+    // fluxes and corrections exactly (Audusse et al.'s second-order interior
+    // term). The solid's effective weight on the bed, as fv2d, with the
+    // terrain's slope.
     {
       const double hx[2] = {depth_x_[0][c], depth_x_[1][c]},
                    hy[2] = {depth_y_[0][c], depth_y_[1][c]};
       const double dbx = sx_[kSlopeSurface][c] - (hx[1] - hx[0]);
       const double dby = sy_[kSlopeSurface][c] - (hy[1] - hy[0]);
-      const double sxs = 0.5 * (hx[0] * share_x_[0][c] + hx[1] * share_x_[1][c]);
-      const double sys = 0.5 * (hy[0] * share_y_[0][c] + hy[1] * share_y_[1][c]);
-      const double sxf = 0.5 * (hx[0] + hx[1]) - sxs, syf = 0.5 * (hy[0] + hy[1]) - sys;
-      d[kXs] -= rx * g_solid_[c] * sxs * dbx, d[kYs] -= ry * g_solid_[c] * sys * dby;
-      d[kXf] -= rx * grav * sxf * dbx, d[kYf] -= ry * grav * syf * dby;
+      const double fx = 0.5 * (hx[0] * (1.0 - share_x_[0][c]) + hx[1] * (1.0 - share_x_[1][c]));
+      const double fy = 0.5 * (hy[0] * (1.0 - share_y_[0][c]) + hy[1] * (1.0 - share_y_[1][c]));
+      d[kXf] -= rx * grav * fx * dbx, d[kYf] -= ry * grav * fy * dby;
     }
-    d[kXs] -= dt * g_remain_[c] * hs * bx[c];
-    d[kYs] -= dt * g_remain_[c] * hs * by[c];
+    d[kXs] -= dt * g_bed_solid_[c] * hs * bx[c];
+    d[kYs] -= dt * g_bed_solid_[c] * hs * by[c];
     // The phases push each other through the fluid's pressure: the fluid
     // by the gradient of the solid's depth (its flux has its own depth
     // only), the solid by buoyancy, gamma g grad(H + b). Centred; a
