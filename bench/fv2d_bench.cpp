@@ -1,6 +1,8 @@
-// Cell updates per second of the 2D runout solver (docs/performance.md):
+// Cell updates per second of the 2D runout solvers (docs/performance.md):
 // a 1000 x 1000 grid of 1 m cells, a bumpy 20 deg slope, a release covering
-// the upper half, 20 steps after 5 warm-up steps, for 1 and 2 threads.
+// the upper half, 20 steps after 5 warm-up steps, for 1 and 2 threads; fv2d
+// (single phase, Voellmy) and the two-phase solver (the same release as 60 %
+// solid, 40 % fluid) side by side in one run.
 // Usage: bench_fv2d [n=1000] [steps=20]
 #include <omp.h>
 
@@ -10,6 +12,7 @@
 #include <cstdlib>
 
 #include "talus/runout/grid/fv2d.hpp"
+#include "talus/runout/grid/two_phase.hpp"
 
 using namespace talus::runout;
 
@@ -29,17 +32,28 @@ int main(int argc, char** argv) {
   p.rheology.law = RheologyLaws::index_of(VoellmyRheology::name);
   p.rheology.tan_friction = 0.2, p.rheology.turbulence = 500;
   p.pressure.phi_internal = 35 * M_PI / 180, p.pressure.tan_phi_basal = 0.2;
+  TwoPhaseParams tp;
+  tp.tan_basal_friction = 0.2, tp.manning = 0.05, tp.viscosity_alpha = 0.01;
+  tp.viscosity_beta = 10.0;
+  tp.pressure.phi_internal = 35 * M_PI / 180, tp.pressure.tan_phi_basal = 0.2;
+  std::vector<double> solid(g.cells()), fluid(g.cells());
+  for (std::size_t c = 0; c < g.cells(); ++c) solid[c] = 0.6 * depth[c], fluid[c] = 0.4 * depth[c];
   const Terrain terrain(g, bed);
+  // Times `steps` steps after 5 warm-up steps.
+  auto timed = [steps](auto& solver) {
+    for (int k = 0; k < 5; ++k) solver.step(solver.stable_time_step());
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int k = 0; k < steps; ++k) solver.step(solver.stable_time_step());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
-    Fv2dSolver s(terrain, p, depth);
-    for (int k = 0; k < 5; ++k) s.step(s.stable_time_step());
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int k = 0; k < steps; ++k) s.step(s.stable_time_step());
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("threads %d  grid %zu x %zu  steps %d  wall %.3f s  cell-updates/s %.3e\n", threads,
-                n, n, steps, wall, static_cast<double>(g.cells()) * steps / wall);
+    Fv2dSolver single(terrain, p, depth);
+    TwoPhaseSolver two(terrain, tp, solid, fluid);
+    const double w1 = timed(single), w2 = timed(two);
+    for (auto [name, wall] : {std::pair{"fv2d", w1}, std::pair{"two-phase", w2}})
+      std::printf("%-9s threads %d  grid %zu x %zu  steps %d  wall %.3f s  cell-updates/s %.3e\n",
+                  name, threads, n, n, steps, wall, static_cast<double>(g.cells()) * steps / wall);
   }
   return 0;
 }

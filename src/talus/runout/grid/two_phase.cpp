@@ -72,7 +72,10 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   const bool wet[4] = {hsl > dry, hfl > dry, hsr > dry, hfr > dry};
   const bool wet_l = wet[0] || wet[1], wet_r = wet[2] || wet[3];
   if (!wet_l && !wet_r) return out;
-  const double cl = std::sqrt(L.gw * L.h), cr = std::sqrt(R.gw * R.h);
+  // The solid's pressure and the wave speeds take the mixture as the phases'
+  // own reconstructions give it (without fluid, exactly fv2d's face depth).
+  const double mix_l = L.hs + L.hf, mix_r = R.hs + R.hf;
+  const double cl = std::sqrt(L.gw * mix_l), cr = std::sqrt(R.gw * mix_r);
   const double u[4] = {wet[0] ? L.us : 0.0, wet[1] ? L.uf : 0.0, wet[2] ? R.us : 0.0,
                        wet[3] ? R.uf : 0.0};
   const double v[4] = {wet[0] ? L.vs : 0.0, wet[1] ? L.vf : 0.0, wet[2] ? R.vs : 0.0,
@@ -85,10 +88,10 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   }
   const double ul[6] = {hsl, hsl * u[0], hsl * v[0], hfl, hfl * u[1], hfl * v[1]};
   const double ur[6] = {hsr, hsr * u[2], hsr * v[2], hfr, hfr * u[3], hfr * v[3]};
-  const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * L.h, ul[1] * v[0],
-                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,    ul[4] * v[1]};
-  const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * R.h, ur[1] * v[2],
-                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,    ur[4] * v[3]};
+  const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * mix_l, ul[1] * v[0],
+                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,      ul[4] * v[1]};
+  const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * mix_r, ur[1] * v[2],
+                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,      ur[4] * v[3]};
   if (sl >= 0.0) {
     std::copy(fl, fl + 6, out.f);
   } else if (sr <= 0.0) {
@@ -100,6 +103,9 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   }
   return out;
 }
+
+// |(x, y)|; std::hypot's care for overflow costs a tenth of a step here.
+inline double norm2(double x, double y) { return std::sqrt(x * x + y * y); }
 
 // What is left of a speed w by a resistance linear and quadratic in the new
 // speed w', taken fully implicitly: w' (1 + a + b w') = w, so
@@ -138,7 +144,7 @@ struct ColumnSources {
 // solid / fluid: the phase moves (wet and not held by friction).
 void apply_sources(Column& col, const ColumnSources& src, bool solid, bool fluid) {
   if (fluid) {
-    const double w = std::hypot(col.mf[0], col.mf[1]) / col.hf;
+    const double w = norm2(col.mf[0], col.mf[1]) / col.hf;
     const double keep = implicit_keep(src.fluid_linear, src.fluid_quadratic, w);
     col.mf[0] *= keep, col.mf[1] *= keep;
   }
@@ -146,14 +152,14 @@ void apply_sources(Column& col, const ColumnSources& src, bool solid, bool fluid
   const double m_s = src.rho_s * col.hs, m_f = src.rho_f * col.hf;
   if (!solid) {  // a still solid (held, or none): drag on the fluid alone
     if (src.drag == 0.0) return;
-    const double a = src.drag / m_f, w = std::hypot(col.mf[0], col.mf[1]) / col.hf;
+    const double a = src.drag / m_f, w = norm2(col.mf[0], col.mf[1]) / col.hf;
     const double keep = src.exponent == 2 ? implicit_keep(0.0, a, w) : implicit_keep(a, 0.0, w);
     col.mf[0] *= keep, col.mf[1] *= keep;
     return;
   }
   double us[2] = {col.ms[0] / col.hs, col.ms[1] / col.hs};
   if (!fluid) {
-    const double w = std::hypot(us[0], us[1]), impulse = src.friction / col.hs;
+    const double w = norm2(us[0], us[1]), impulse = src.friction / col.hs;
     const double scale = w > impulse ? 1.0 - impulse / w : 0.0;
     col.ms[0] *= scale, col.ms[1] *= scale;
     return;
@@ -161,7 +167,7 @@ void apply_sources(Column& col, const ColumnSources& src, bool solid, bool fluid
   double uf[2] = {col.mf[0] / col.hf, col.mf[1] / col.hf};
   const double total = m_s + m_f;
   const double rel[2] = {uf[0] - us[0], uf[1] - us[1]};
-  const double a = src.drag * (1.0 / m_s + 1.0 / m_f), w = std::hypot(rel[0], rel[1]);
+  const double a = src.drag * (1.0 / m_s + 1.0 / m_f), w = norm2(rel[0], rel[1]);
   const double keep = src.exponent == 2 ? implicit_keep(0.0, a, w) : implicit_keep(a, 0.0, w);
   for (int k = 0; k < 2; ++k) {
     const double p = m_s * us[k] + m_f * uf[k];
@@ -171,7 +177,7 @@ void apply_sources(Column& col, const ColumnSources& src, bool solid, bool fluid
   // An impulse j on the solid, with the drag implicit, changes its velocity
   // by j beta: beta = (1 - (1 - keep) m_f / (m_s + m_f)) / m_s.
   const double beta = (1.0 - (1.0 - keep) * m_f / total) / m_s;
-  const double w_s = std::hypot(us[0], us[1]);
+  const double w_s = norm2(us[0], us[1]);
   if (w_s > 0.0 && src.friction > 0.0) {
     const double j = std::min(src.rho_s * src.friction, w_s / beta);
     for (int k = 0; k < 2; ++k) {
@@ -292,8 +298,8 @@ double TwoPhaseSolver::max_speed() const {
   double m = 0.0;
   const double dry = p_.dry_depth;
   for (std::size_t c = 0; c < s_.hs.size(); ++c) {
-    if (s_.hs[c] > dry) m = std::max(m, std::hypot(s_.hsu[c], s_.hsv[c]) / s_.hs[c]);
-    if (s_.hf[c] > dry) m = std::max(m, std::hypot(s_.hfu[c], s_.hfv[c]) / s_.hf[c]);
+    if (s_.hs[c] > dry) m = std::max(m, norm2(s_.hsu[c], s_.hsv[c]) / s_.hs[c]);
+    if (s_.hf[c] > dry) m = std::max(m, norm2(s_.hfu[c], s_.hfv[c]) / s_.hf[c]);
   }
   return m;
 }
@@ -373,7 +379,10 @@ void TwoPhaseSolver::reconstruct(const TwoPhaseState& in) {
     uf_[c] = hf > dry ? in.hfu[c] / hf : 0.0, vf_[c] = hf > dry ? in.hfv[c] / hf : 0.0;
     eta_[c] = dom[c] ? b[c] + hs + hf : 0.0;
   }
-  if (p_.order == 1) return;
+  if (p_.order == 1) {  // no slopes: the sides are the cell's values
+    side_depths(in);
+    return;
+  }
   const std::vector<double>* field[7] = {&in.hs, &in.hf, &eta_, &us_, &vs_, &uf_, &vf_};
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < ny; ++j) {
@@ -647,7 +656,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       if (hf > dry) {
         const double as = hs / h,
                      c_drag = two_phase::drag_coefficient(p_.drag, as, 1.0 - as, viscosity(as));
-        const double ux = uf_[c], uy = vf_[c], speed = std::hypot(ux, uy);
+        const double ux = uf_[c], uy = vf_[c], speed = norm2(ux, uy);
         const double scale = dt * h * c_drag * (J == 2 ? speed : 1.0) / rho_s;
         mx += scale * ux, my += scale * uy;
       }
