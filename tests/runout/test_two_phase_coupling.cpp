@@ -174,7 +174,7 @@ TEST(TwoPhaseCoupling, DragBalancesAConstantForceDifference) {
   p.tan_basal_friction = tan_delta;
   p.viscosity_alpha = 1e-3;
   p.drag.smoothing_speed = 1.0;  // a stronger drag: relaxes within seconds
-  p.virtual_mass = true;         // (off by default) it must not move the end
+  p.virtual_mass = true;         // (the default) it must not move the end
   TwoPhaseSolver s(Terrain(g, bed), p, std::vector<double>(g.cells(), hs),
                    std::vector<double>(g.cells(), hf));
   const double gam = p.drag.fluid_density / p.drag.solid_density;

@@ -583,7 +583,8 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   // solid's only through faces `open`: west, east, south, north), the
   // hydrostatic corrections, the interior bed terms of the reconstruction,
   // the solid's remaining bed term and the non-conservative fraction terms.
-  auto explicit_change = [&](Index c, Index i, Index j, const bool open[4], double d[kFields]) {
+  auto explicit_change = [&](Index c, Index i, Index j, const bool open[4], double d[kFields],
+                             bool fluxes_only = false) {
     const Index w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
     for (int m = 0; m < kFields; ++m) {
       const bool solid = m < kHf;
@@ -593,6 +594,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     }
     d[kXf] -= rx * (cxl_[e] - cxr_[w]);
     d[kYf] -= ry * (cyl_[n] - cyr_[s]);
+    if (fluxes_only) return;
     const double hs = in.hs[c], hf = in.hf[c];
     // The fluid's bed: -g (H_f,w + H_f,e) / 2 (b_e - b_w) / dx with the
     // sides' beds; over a flat surface it balances the pressure of the
@@ -703,11 +705,18 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       // Virtual mass acts on a phase's acceleration: where most of a phase
       // arrived during the stage, its change of cell velocity is mostly new
       // material (and its velocity at the start, of a trace, meaningless).
-      if (p_.virtual_mass && solid_wet && fluid_wet && hs0 > dry && hf0 > dry && 2.0 * hs0 >= hs &&
-          2.0 * hf0 >= hf) {
-        src.virtual_mass = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
-        src.rel_before[0] = in.hfu[c] / hf0 - in.hsu[c] / hs0;
-        src.rel_before[1] = in.hfv[c] / hf0 - in.hsv[c] / hs0;
+      // Virtual mass acts on the phases' accelerations by the stage's local
+      // forces (gravity, buoyancy, drag, friction, resistance), not on the
+      // change of a cell's velocities by what its faces carry in and out.
+      if (p_.virtual_mass && solid_wet && fluid_wet) {
+        double carried[kFields];
+        explicit_change(c, i, j, open, carried, true);
+        const double hs1 = hs0 + carried[kHs], hf1 = hf0 + carried[kHf];
+        if (hs1 > dry && hf1 > dry) {
+          src.virtual_mass = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
+          src.rel_before[0] = (in.hfu[c] + carried[kXf]) / hf1 - (in.hsu[c] + carried[kXs]) / hs1;
+          src.rel_before[1] = (in.hfv[c] + carried[kYf]) / hf1 - (in.hsv[c] + carried[kYs]) / hs1;
+        }
       }
       apply_sources(col, src, solid_wet, fluid_wet);
       ms[0] = col.ms[0], ms[1] = col.ms[1], mf[0] = col.mf[0], mf[1] = col.mf[1];

@@ -51,11 +51,16 @@
 //   solid's Coulomb friction as an impulse shared through that implicit drag
 //   (stops, never reverses; a solid at rest stays held while friction can
 //   hold it against fluxes, gravity and drag, as in fv2d), then virtual
-//   mass when asked for, which scales the stage's change of the relative
-//   velocity by r (finite as alpha_f -> 0). None of these limits the step,
-//   so alpha_s or alpha_f -> 0 does not make it stiff. A constant force
-//   difference against the drag is balanced at the exact terminal slip;
-//   relaxation towards it is first order in time.
+//   mass, which scales the change of the relative velocity those local
+//   forces make (with gravity, buoyancy and the phases' coupling) by r,
+//   finite as alpha_f -> 0. None of these limits the step, so alpha_s or
+//   alpha_f -> 0 does not make it stiff. A constant force difference against
+//   the drag is balanced at the exact terminal slip; relaxation towards it
+//   is first order in time.
+// - Virtual mass leaves out what a cell's faces carry in and out (advection
+//   and each phase's own pressure flux): applied to the whole change of the
+//   cell velocities it did not converge with the grid (new material arriving
+//   at a front is not an acceleration).
 // - A face between two wet cells whose reconstructed beds differ by more
 //   than a thin layer is deep (curved, steep ground) closes for that layer:
 //   there it acts as a wall (the layer's momentum into it is reflected) --
@@ -64,10 +69,6 @@
 //   fix where a side would be negative), which makes such steps third-order
 //   small on smooth ground; a bed continuous across faces (Chen & Noelle
 //   2022) would remove them.
-// - Virtual mass, when on, is applied to the change of each phase's cell
-//   velocity over a stage (local, not material, acceleration), where at
-//   least half of each phase was there at the stage's start. It is off by
-//   default: so applied it does not converge with the grid.
 #include <vector>
 
 #include "talus/runout/earth_pressure.hpp"
@@ -86,11 +87,8 @@ struct TwoPhaseParams {
   double viscosity_alpha = 0.0;  // Pa s, eta = alpha e^(beta alpha_s)
   double viscosity_beta = 0.0;   // -
   double shear_factor = 3.0;     // chi
-  // Off by default: applied to a stage's change of the cell velocities, it
-  // does not converge with the grid (test_two_phase_coupling.cpp's debris
-  // release: L1 distances between grids 0.45 -> 0.39 m^3 of solid with it,
-  // 0.14 -> 0.08 without); to be redone on Pudasaini's transported momenta.
-  bool virtual_mass = false;
+  // Virtual mass (seed eq. 35) on the stage's local forces (see the .cpp).
+  bool virtual_mass = true;
   int order = 2;
   double courant = 0.45;
   double dry_depth = 1e-6;  // m: a thinner phase carries no velocity
