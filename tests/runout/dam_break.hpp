@@ -32,6 +32,16 @@ struct DamBreak {
   }
 };
 
+// Ritter (1892): h = (2 c0 - x / t)^2 / (9 g) for -c0 t <= x <= 2 c0 t (dam
+// at x = 0, reservoir of depth h0 at x < 0, horizontal frictionless bed).
+inline double ritter_depth(double x, double t, double h0, double g = 9.81) {
+  const double c0 = std::sqrt(g * h0);
+  if (x <= -c0 * t) return h0;
+  if (x >= 2.0 * c0 * t) return 0.0;
+  const double a = 2.0 * c0 - x / t;
+  return a * a / (9.0 * g);
+}
+
 // The front of a depth profile given at increasing positions: the farthest
 // point where the depth, linear between the samples, exceeds eps.
 inline double front_at_depth(const std::vector<double>& x, const std::vector<double>& depth,

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "dam_break.hpp"
 #include "fv2d_helpers.hpp"
 
 namespace talus::runout {
@@ -21,14 +22,7 @@ using testing::sample;
 
 constexpr double kG = 9.81;
 
-// Ritter (1892): h = (2 c0 - x / t)^2 / (9 g) for -c0 t <= x <= 2 c0 t.
-double ritter(double x, double t, double h0) {
-  const double c0 = std::sqrt(kG * h0);
-  if (x <= -c0 * t) return h0;
-  if (x >= 2.0 * c0 * t) return 0.0;
-  const double a = 2.0 * c0 - x / t;
-  return a * a / (9.0 * kG);
-}
+double ritter(double x, double t, double h0) { return reference::ritter_depth(x, t, h0, kG); }
 
 struct DamBreak {
   std::vector<double> h;  // along the axis

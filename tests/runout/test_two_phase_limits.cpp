@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dam_break.hpp"
 #include "point_mass.hpp"
 #include "talus/core/space.hpp"
 #include "two_phase_helpers.hpp"
@@ -32,13 +33,7 @@ TwoPhaseSolver water_dam_break(double dx, double length, double h_left, double h
                         fluid);
 }
 
-double ritter(double x, double t, double h0) {
-  const double c0 = std::sqrt(kG * h0);
-  if (x <= -c0 * t) return h0;
-  if (x >= 2.0 * c0 * t) return 0.0;
-  const double a = 2.0 * c0 - x / t;
-  return a * a / (9.0 * kG);
-}
+double ritter(double x, double t, double h0) { return reference::ritter_depth(x, t, h0, kG); }
 
 double ritter_l1(double dx, double t) {
   const double length = 100.0, h0 = 1.0;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "talus/core/error.hpp"
+#include "talus/runout/grid/cell_sums.hpp"
 #include "talus/runout/grid/limiter.hpp"
 
 namespace talus::runout {
@@ -150,22 +151,14 @@ double Fv2dSolver::speed(std::size_t c) const {
   return std::sqrt(u * u + v * v + w * w);
 }
 
-double Fv2dSolver::volume() const {
-  double sum = 0.0;
-  for (double h : s_.h) sum += h;
-  return sum * terrain_.shape().cell_area();
-}
+double Fv2dSolver::volume() const { return cell_sum(s_.h) * terrain_.shape().cell_area(); }
 
 double Fv2dSolver::momentum_x() const {
-  double sum = 0.0;
-  for (double q : s_.hu) sum += q;
-  return p_.density * sum * terrain_.shape().cell_area();
+  return p_.density * cell_sum(s_.hu) * terrain_.shape().cell_area();
 }
 
 double Fv2dSolver::momentum_y() const {
-  double sum = 0.0;
-  for (double q : s_.hv) sum += q;
-  return p_.density * sum * terrain_.shape().cell_area();
+  return p_.density * cell_sum(s_.hv) * terrain_.shape().cell_area();
 }
 
 double Fv2dSolver::kinetic_energy() const {

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "talus/core/error.hpp"
+#include "talus/runout/grid/cell_sums.hpp"
 #include "talus/runout/grid/limiter.hpp"
 
 namespace talus::runout {
@@ -271,27 +272,23 @@ void TwoPhaseSolver::set_state(const TwoPhaseState& state) {
 }
 
 double TwoPhaseSolver::solid_volume() const {
-  double sum = 0.0;
-  for (double h : s_.hs) sum += h;
-  return sum * terrain_.shape().cell_area();
+  return cell_sum(s_.hs) * terrain_.shape().cell_area();
 }
 
 double TwoPhaseSolver::fluid_volume() const {
-  double sum = 0.0;
-  for (double h : s_.hf) sum += h;
-  return sum * terrain_.shape().cell_area();
+  return cell_sum(s_.hf) * terrain_.shape().cell_area();
 }
 
 double TwoPhaseSolver::momentum_x() const {
-  double s = 0.0, f = 0.0;
-  for (std::size_t c = 0; c < s_.hs.size(); ++c) s += s_.hsu[c], f += s_.hfu[c];
-  return (p_.drag.solid_density * s + p_.drag.fluid_density * f) * terrain_.shape().cell_area();
+  const auto& d = p_.drag;
+  return (d.solid_density * cell_sum(s_.hsu) + d.fluid_density * cell_sum(s_.hfu)) *
+         terrain_.shape().cell_area();
 }
 
 double TwoPhaseSolver::momentum_y() const {
-  double s = 0.0, f = 0.0;
-  for (std::size_t c = 0; c < s_.hs.size(); ++c) s += s_.hsv[c], f += s_.hfv[c];
-  return (p_.drag.solid_density * s + p_.drag.fluid_density * f) * terrain_.shape().cell_area();
+  const auto& d = p_.drag;
+  return (d.solid_density * cell_sum(s_.hsv) + d.fluid_density * cell_sum(s_.hfv)) *
+         terrain_.shape().cell_area();
 }
 
 double TwoPhaseSolver::max_speed() const {
