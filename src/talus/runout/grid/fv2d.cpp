@@ -8,6 +8,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/runout/grid/cell_sums.hpp"
+#include "talus/runout/grid/divergence.hpp"
 #include "talus/runout/grid/limiter.hpp"
 
 namespace talus::runout {
@@ -224,7 +225,6 @@ void Fv2dSolver::update_earth_pressure() {
   if (p_.pressure.mode == EarthPressureMode::Constant) return;
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
-  const auto& dom = terrain_.inside();
   auto vel = [&](const std::vector<double>& q, Index c) {
     return s_.h[c] > p_.dry_depth ? q[c] / s_.h[c] : 0.0;
   };
@@ -233,12 +233,9 @@ void Fv2dSolver::update_earth_pressure() {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       if (s_.h[c] <= p_.dry_depth) continue;
-      const Index w = i > 0 && dom[c - 1] ? c - 1 : c, e = i < nx - 1 && dom[c + 1] ? c + 1 : c;
-      const Index s = j > 0 && dom[c - nx] ? c - nx : c, n = j < ny - 1 && dom[c + nx] ? c + nx : c;
-      double div = 0.0;
-      if (e != w) div += (vel(s_.hu, e) - vel(s_.hu, w)) / (static_cast<double>(e - w) * g.dx);
-      if (n != s)
-        div += (vel(s_.hv, n) - vel(s_.hv, s)) / (static_cast<double>((n - s) / nx) * g.dy);
+      const double div = velocity_divergence(
+          terrain_, i, j, [&](Index k) { return vel(s_.hu, k); },
+          [&](Index k) { return vel(s_.hv, k); });
       if (div > 0.0) k_[c] = k_active_;
       if (div < 0.0) k_[c] = k_passive_;
     }

@@ -8,6 +8,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/runout/grid/cell_sums.hpp"
+#include "talus/runout/grid/divergence.hpp"
 #include "talus/runout/grid/limiter.hpp"
 
 namespace talus::runout {
@@ -346,13 +347,9 @@ void TwoPhaseSolver::update_earth_pressure() {
       const Index c = j * nx + i;
       // The solid's earth pressure follows the divergence of its velocity (fv2d's rule).
       if (p_.pressure.mode != EarthPressureMode::Constant && s_.hs[c] > dry) {
-        const Index w = i > 0 && dom[c - 1] ? c - 1 : c, e = i < nx - 1 && dom[c + 1] ? c + 1 : c;
-        const Index s = j > 0 && dom[c - nx] ? c - nx : c;
-        const Index n = j < ny - 1 && dom[c + nx] ? c + nx : c;
-        double div = 0.0;
-        if (e != w) div += (vel(s_.hsu, e) - vel(s_.hsu, w)) / (static_cast<double>(e - w) * g.dx);
-        if (n != s)
-          div += (vel(s_.hsv, n) - vel(s_.hsv, s)) / (static_cast<double>((n - s) / nx) * g.dy);
+        const double div = velocity_divergence(
+            terrain_, i, j, [&](Index k) { return vel(s_.hsu, k); },
+            [&](Index k) { return vel(s_.hsv, k); });
         if (div > 0.0) k_[c] = k_active_;
         if (div < 0.0) k_[c] = k_passive_;
       }
