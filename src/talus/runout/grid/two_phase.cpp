@@ -106,6 +106,19 @@ FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
   return out;
 }
 
+// Which faces of cell (i, j) let solid through: none between two quiet
+// cells (held by friction, or without solid; the ghost beyond an edge is as
+// quiet as the cell inside). Order: west, east, south, north.
+inline void solid_faces_open(const std::vector<unsigned char>& quiet, Index i, Index j, Index nx,
+                             Index ny, bool open[4]) {
+  const Index c = j * nx + i;
+  const bool q = quiet[c] != 0;
+  open[0] = !(q && (i == 0 || quiet[c - 1]));
+  open[1] = !(q && (i == nx - 1 || quiet[c + 1]));
+  open[2] = !(q && (j == 0 || quiet[c - nx]));
+  open[3] = !(q && (j == ny - 1 || quiet[c + nx]));
+}
+
 // |(x, y)|; std::hypot's care for overflow costs a tenth of a step here.
 inline double norm2(double x, double y) { return std::sqrt(x * x + y * y); }
 
@@ -518,10 +531,8 @@ void TwoPhaseSolver::limit_outflow(const TwoPhaseState& in, double dt) {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i, w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
       if (!dom[c]) continue;
-      const bool q = held_[c] != 0;
-      const bool open[4] = {!(q && (i == 0 || held_[c - 1])), !(q && (i == nx - 1 || held_[c + 1])),
-                            !(q && (j == 0 || held_[c - nx])),
-                            !(q && (j == ny - 1 || held_[c + nx]))};
+      bool open[4];
+      solid_faces_open(held_, i, j, nx, ny, open);
       for (int phase = 0; phase < 2; ++phase) {
         const int m = phase == 0 ? kHs : kHf;
         const bool solid = phase == 0;
@@ -668,10 +679,8 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       if (!dom[c]) continue;
-      const bool q = held_[c] != 0;
-      const bool open[4] = {!(q && (i == 0 || held_[c - 1])), !(q && (i == nx - 1 || held_[c + 1])),
-                            !(q && (j == 0 || held_[c - nx])),
-                            !(q && (j == ny - 1 || held_[c + nx]))};
+      bool open[4];
+      solid_faces_open(held_, i, j, nx, ny, open);
       double d[kFields];
       explicit_change(c, i, j, open, d);
       const double hs0 = in.hs[c], hf0 = in.hf[c];
