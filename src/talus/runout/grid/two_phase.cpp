@@ -10,101 +10,22 @@
 #include "talus/runout/grid/cell_sums.hpp"
 #include "talus/runout/grid/divergence.hpp"
 #include "talus/runout/grid/limiter.hpp"
+#include "talus/runout/grid/two_phase_flux.hpp"
+#include "talus/runout/grid/two_phase_sources.hpp"
 
 namespace talus::runout {
 namespace {
 
 using Index = std::ptrdiff_t;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// One side of a face in the face's frame: each phase's depth and normal /
-// tangential velocity, the bed there, the solid's pressure coefficient.
-// h: the mixture's depth (for the fluid's cut); gs: the solid's pressure
-// coefficient; gw: the wave speed's, c^2 = gw h.
-struct Side {
-  double hs, us, vs, hf, uf, vf, h, b, gs, gw;
-};
-
-// The fluxes of a face in its frame (per phase: depth, normal and tangential
-// momentum) and the fluid's hydrostatic correction of its normal momentum
-// that the left and the right cell add (Audusse et al. 2004).
-struct FaceFlux {
-  double f[6] = {0, 0, 0, 0, 0, 0};
-  double left = 0.0, right = 0.0;
-};
-
-inline Side ghost(const Side& inside, GridBoundary b) {
-  if (b == GridBoundary::Open) return inside;
-  Side m = inside;
-  m.us = -inside.us, m.uf = -inside.uf;
-  return m;
-}
-
-// HLL with wave speeds covering every phase present (the exact dry-front
-// speed u + 2c towards a dry side, as fv2d). The fluid by hydrostatic
-// reconstruction: each side's fluid is cut to the higher of the two beds (in
-// proportion to the mixture's depth there), and the pressure the cut removed
-// returns as the side's correction. The solid as fv2d takes it, uncut: its
-// bed term is a source with the terrain's slope (a solid at rest is held by
-// friction, not by a balance of discrete pressures, and its earth pressure
-// k, between k_a and k_p, would multiply any error of that balance).
-FaceFlux face_flux(const Side& L, const Side& R, double g, double dry) {
-  FaceFlux out;
-  const double b_star = std::max(L.b, R.b);
-  const double hl_star = std::max(0.0, L.h + L.b - b_star);
-  const double hr_star = std::max(0.0, R.h + R.b - b_star);
-  const double hfl = L.h > 0.0 ? L.hf * hl_star / L.h : 0.0;
-  const double hfr = R.h > 0.0 ? R.hf * hr_star / R.h : 0.0;
-  out.left = 0.5 * g * (L.hf * L.hf - hfl * hfl);
-  out.right = 0.5 * g * (R.hf * R.hf - hfr * hfr);
-  // Fluid on a wet side that the cut removes entirely, next to a wet side,
-  // meets a step higher than its surface between two parts of the flow:
-  // for it the face is a wall, and beyond the pressure above the wall's
-  // reaction stops what moves into it (the momentum flux of HLL between the
-  // side and its mirror image, h u (2 |u| + c)). The reconstruction makes
-  // such steps where two cells place the bed at their face further apart
-  // than a thin layer is deep (curved terrain); without the reaction that
-  // layer kept accelerating without moving. At a front (the other side dry)
-  // the cut is no wall: the flow advances onto the dry bed.
-  if (L.hf > dry && R.h > dry && hl_star == 0.0 && L.uf > 0.0)
-    out.left += L.hf * L.uf * (2.0 * L.uf + std::sqrt(g * L.h));
-  if (R.hf > dry && L.h > dry && hr_star == 0.0 && R.uf < 0.0)
-    out.right += R.hf * R.uf * (2.0 * R.uf - std::sqrt(g * R.h));
-  const double hsl = L.hs, hsr = R.hs;
-  const bool wet[4] = {hsl > dry, hfl > dry, hsr > dry, hfr > dry};
-  const bool wet_l = wet[0] || wet[1], wet_r = wet[2] || wet[3];
-  if (!wet_l && !wet_r) return out;
-  // The solid's pressure and the wave speeds take the mixture as the phases'
-  // own reconstructions give it (without fluid, exactly fv2d's face depth).
-  const double mix_l = L.hs + L.hf, mix_r = R.hs + R.hf;
-  const double cl = std::sqrt(L.gw * mix_l), cr = std::sqrt(R.gw * mix_r);
-  const double u[4] = {wet[0] ? L.us : 0.0, wet[1] ? L.uf : 0.0, wet[2] ? R.us : 0.0,
-                       wet[3] ? R.uf : 0.0};
-  const double v[4] = {wet[0] ? L.vs : 0.0, wet[1] ? L.vf : 0.0, wet[2] ? R.vs : 0.0,
-                       wet[3] ? R.vf : 0.0};
-  double sl = kInf, sr = -kInf;
-  for (int k = 0; k < 2; ++k) {
-    if (wet[k]) sl = std::min(sl, u[k] - cl), sr = std::max(sr, u[k] + (wet_r ? cl : 2.0 * cl));
-    if (wet[k + 2])
-      sl = std::min(sl, u[k + 2] - (wet_l ? cr : 2.0 * cr)), sr = std::max(sr, u[k + 2] + cr);
-  }
-  const double ul[6] = {hsl, hsl * u[0], hsl * v[0], hfl, hfl * u[1], hfl * v[1]};
-  const double ur[6] = {hsr, hsr * u[2], hsr * v[2], hfr, hfr * u[3], hfr * v[3]};
-  const double fl[6] = {ul[1], ul[1] * u[0] + 0.5 * L.gs * hsl * mix_l, ul[1] * v[0],
-                        ul[4], ul[4] * u[1] + 0.5 * g * hfl * hfl,      ul[4] * v[1]};
-  const double fr[6] = {ur[1], ur[1] * u[2] + 0.5 * R.gs * hsr * mix_r, ur[1] * v[2],
-                        ur[4], ur[4] * u[3] + 0.5 * g * hfr * hfr,      ur[4] * v[3]};
-  if (sl >= 0.0) {
-    std::copy(fl, fl + 6, out.f);
-  } else if (sr <= 0.0) {
-    std::copy(fr, fr + 6, out.f);
-  } else {
-    const double inv = 1.0 / (sr - sl);
-    for (int m = 0; m < 6; ++m)
-      out.f[m] = (sr * fl[m] - sl * fr[m] + sl * sr * (ur[m] - ul[m])) * inv;
-  }
-  return out;
-}
+using two_phase_detail::apply_sources;
+using two_phase_detail::Column;
+using two_phase_detail::ColumnSources;
+using two_phase_detail::face_flux;
+using two_phase_detail::FaceFlux;
+using two_phase_detail::ghost;
+using two_phase_detail::kInf;
+using two_phase_detail::norm2;
+using two_phase_detail::Side;
 
 // Which faces of cell (i, j) let solid through: none between two quiet
 // cells (held by friction, or without solid; the ghost beyond an edge is as
@@ -117,98 +38,6 @@ inline void solid_faces_open(const std::vector<unsigned char>& quiet, Index i, I
   open[1] = !(q && (i == nx - 1 || quiet[c + 1]));
   open[2] = !(q && (j == 0 || quiet[c - nx]));
   open[3] = !(q && (j == ny - 1 || quiet[c + nx]));
-}
-
-// |(x, y)|; std::hypot's care for overflow costs a tenth of a step here.
-inline double norm2(double x, double y) { return std::sqrt(x * x + y * y); }
-
-// What is left of a speed w by a resistance linear and quadratic in the new
-// speed w', taken fully implicitly: w' (1 + a + b w') = w, so
-// w' / w = 2 / (1 + a + sqrt((1 + a)^2 + 4 b w)). Never reverses, stable for
-// any step, and a balance of a constant force against the resistance is its
-// fixed point exactly (the Manning depth, the drag's terminal slip).
-inline double implicit_keep(double a, double b, double w) {
-  const double one_a = 1.0 + a;
-  return 2.0 / (one_a + std::sqrt(one_a * one_a + 4.0 * b * w));
-}
-
-// One cell after the explicit part of a stage: each phase's depth and
-// momentum per unit of its density (H_p U_p).
-struct Column {
-  double hs, hf;
-  double ms[2], mf[2];
-};
-
-// The stage's implicit sources of a cell, each already times dt: the drag
-// (dt H C), the solid's Coulomb friction (per unit solid density), the
-// fluid's laminar (linear) and Manning (quadratic) resistance; the virtual
-// mass factor r with the relative velocity at the stage's start.
-struct ColumnSources {
-  double rho_s = 0.0, rho_f = 0.0;
-  int exponent = 1;
-  double drag = 0.0, friction = 0.0, fluid_linear = 0.0, fluid_quadratic = 0.0;
-  double virtual_mass = 1.0, rel_before[2] = {0.0, 0.0};
-};
-
-// In this order: the fluid's resistance; the drag, implicit in the relative
-// velocity (momentum conserving); the solid's friction as an impulse shared
-// through that implicit drag (it stops the solid, never reverses it); then
-// virtual mass scales the stage's change of the relative velocity. With the
-// friction inside the implicit coupling, the slip at which a constant force
-// difference balances the drag is the stage's fixed point exactly.
-// solid / fluid: the phase moves (wet and not held by friction).
-void apply_sources(Column& col, const ColumnSources& src, bool solid, bool fluid) {
-  if (fluid) {
-    const double w = norm2(col.mf[0], col.mf[1]) / col.hf;
-    const double keep = implicit_keep(src.fluid_linear, src.fluid_quadratic, w);
-    col.mf[0] *= keep, col.mf[1] *= keep;
-  }
-  if (!solid && !fluid) return;
-  const double m_s = src.rho_s * col.hs, m_f = src.rho_f * col.hf;
-  if (!solid) {  // a still solid (held, or none): drag on the fluid alone
-    if (src.drag == 0.0) return;
-    const double a = src.drag / m_f, w = norm2(col.mf[0], col.mf[1]) / col.hf;
-    const double keep = src.exponent == 2 ? implicit_keep(0.0, a, w) : implicit_keep(a, 0.0, w);
-    col.mf[0] *= keep, col.mf[1] *= keep;
-    return;
-  }
-  double us[2] = {col.ms[0] / col.hs, col.ms[1] / col.hs};
-  if (!fluid) {
-    const double w = norm2(us[0], us[1]), impulse = src.friction / col.hs;
-    const double scale = w > impulse ? 1.0 - impulse / w : 0.0;
-    col.ms[0] *= scale, col.ms[1] *= scale;
-    return;
-  }
-  double uf[2] = {col.mf[0] / col.hf, col.mf[1] / col.hf};
-  const double total = m_s + m_f;
-  const double rel[2] = {uf[0] - us[0], uf[1] - us[1]};
-  const double a = src.drag * (1.0 / m_s + 1.0 / m_f), w = norm2(rel[0], rel[1]);
-  const double keep = src.exponent == 2 ? implicit_keep(0.0, a, w) : implicit_keep(a, 0.0, w);
-  for (int k = 0; k < 2; ++k) {
-    const double p = m_s * us[k] + m_f * uf[k];
-    us[k] = (p - m_f * keep * rel[k]) / total;
-    uf[k] = us[k] + keep * rel[k];
-  }
-  // An impulse j on the solid, with the drag implicit, changes its velocity
-  // by j beta: beta = (1 - (1 - keep) m_f / (m_s + m_f)) / m_s.
-  const double beta = (1.0 - (1.0 - keep) * m_f / total) / m_s;
-  const double w_s = norm2(us[0], us[1]);
-  if (w_s > 0.0 && src.friction > 0.0) {
-    const double j = std::min(src.rho_s * src.friction, w_s / beta);
-    for (int k = 0; k < 2; ++k) {
-      const double impulse = -j * us[k] / w_s;
-      us[k] += beta * impulse;
-      uf[k] += (1.0 - m_s * beta) * impulse / m_f;
-    }
-  }
-  if (src.virtual_mass < 1.0)
-    for (int k = 0; k < 2; ++k) {
-      const double p = m_s * us[k] + m_f * uf[k];
-      const double r = src.rel_before[k] + src.virtual_mass * (uf[k] - us[k] - src.rel_before[k]);
-      us[k] = (p - m_f * r) / total;
-      uf[k] = us[k] + r;
-    }
-  for (int k = 0; k < 2; ++k) col.ms[k] = us[k] * col.hs, col.mf[k] = uf[k] * col.hf;
 }
 
 // The fields reconstructed per cell, in the order of the slope arrays.
