@@ -32,7 +32,7 @@ double drag_coefficient(const DragParams& p, double alpha_s, double alpha_f, dou
   const double ratio = alpha_f / alpha_s;
   const double f = gamma / 180.0 * ratio * ratio * ratio * re;
   const double g = std::pow(alpha_f, richardson_zaki_exponent(re) - 1.0);
-  const double big_p = std::pow(alpha_s, p.mixing_exponent);
+  const double big_p = p.mixing_exponent == 1.0 ? alpha_s : std::pow(alpha_s, p.mixing_exponent);
   const double s_p = (big_p / alpha_s + (1.0 - big_p) / alpha_f) * p.smoothing_speed;
   const double denominator = u_t * (big_p * f + (1.0 - big_p) * g) + s_p;
   const double scale = p.exponent == 2 ? denominator * denominator : denominator;

@@ -417,8 +417,10 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   // solid's only through faces `open`: west, east, south, north), the
   // hydrostatic corrections, the interior bed terms of the reconstruction,
   // the solid's remaining bed term and the non-conservative fraction terms.
+  // carried: when given, receives the part the faces carry (before the
+  // local terms are added).
   auto explicit_change = [&](Index c, Index i, Index j, const bool open[4], double d[kFields],
-                             bool fluxes_only = false) {
+                             double* carried = nullptr) {
     const Index w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
     for (int m = 0; m < kFields; ++m) {
       const bool solid = m < kHf;
@@ -428,7 +430,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     }
     d[kXf] -= rx * (cxl_[e] - cxr_[w]);
     d[kYf] -= ry * (cyl_[n] - cyr_[s]);
-    if (fluxes_only) return;
+    if (carried) std::copy(d, d + kFields, carried);
     const double hs = in.hs[c], hf = in.hf[c];
     // The fluid's bed: -g (H_f,w + H_f,e) / 2 (b_e - b_w) / dx with the
     // sides' beds; over a flat surface it balances the pressure of the
@@ -510,8 +512,8 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       if (!dom[c]) continue;
       bool open[4];
       solid_faces_open(held_, i, j, nx, ny, open);
-      double d[kFields];
-      explicit_change(c, i, j, open, d);
+      double d[kFields], carried[kFields];
+      explicit_change(c, i, j, open, d, carried);
       const double hs0 = in.hs[c], hf0 = in.hf[c];
       // A cell the outflow limit emptied can be a round-off below 0 (~1e-25 m): 0.
       const double hs = std::max(0.0, hs0 + d[kHs]), hf = std::max(0.0, hf0 + d[kHf]), h = hs + hf;
@@ -541,8 +543,6 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       // forces (gravity, buoyancy, drag, friction, resistance), not on the
       // change of a cell's velocities by what its faces carry in and out.
       if (p_.virtual_mass && solid_wet && fluid_wet) {
-        double carried[kFields];
-        explicit_change(c, i, j, open, carried, true);
         const double hs1 = hs0 + carried[kHs], hf1 = hf0 + carried[kHf];
         if (hs1 > dry && hf1 > dry) {
           src.virtual_mass = two_phase::virtual_mass_relative_factor(as, 1.0 - as, gam);
