@@ -336,3 +336,48 @@ TEST(TwoPhaseConvergence, DebrisReleaseOnAPlaneConvergesWithTheGrid) {
 
 }  // namespace
 }  // namespace talus::runout
+
+namespace talus::runout {
+namespace {
+
+TEST(TwoPhaseSources, RainAndInfiltrationBalanceTheFluidsVolume) {
+  // Continuity with R - I (seed eqs. 47, 49): on a closed bumpy basin the
+  // fluid's volume is the start's plus R A t less what infiltrated, to
+  // round-off; rain alone adds exactly R A t; infiltration faster than rain
+  // empties cells but never below 0. The solid is untouched.
+  GridShape g{30, 20, 1.0, 1.0};
+  auto bed =
+      sample(g, [](double x, double y) { return 0.3 * std::sin(0.4 * x) * std::cos(0.3 * y); });
+  auto solid =
+      sample(g, [](double x, double y) { return std::hypot(x - 10, y - 10) < 4 ? 0.3 : 0.0; });
+  auto fluid = sample(g, [](double x, double) { return x > 20 ? 0.2 : 0.0; });
+  const double area = 30.0 * 20.0, t = 20.0;
+  for (double infiltration : {0.0, 2e-3}) {
+    TwoPhaseParams p;
+    p.tan_basal_friction = 0.4, p.manning = 0.05, p.viscosity_alpha = 0.01;
+    p.rainfall = 1e-3, p.infiltration = infiltration;
+    TwoPhaseSolver s(Terrain(g, bed), p, solid, fluid);
+    const double vs = s.solid_volume(), vf = s.fluid_volume();
+    double lowest = 0.0;
+    run_to(s, t, [&](const TwoPhaseSolver& f) {
+      lowest = std::min(lowest, *std::min_element(f.state().hf.begin(), f.state().hf.end()));
+    });
+    std::printf(
+        "rain %g, infiltration %g: fluid %.6f m^3 (start %.6f, rained %.6f, infiltrated "
+        "%.6f)\n",
+        p.rainfall, infiltration, s.fluid_volume(), vf, s.rained_volume(), s.infiltrated_volume());
+    EXPECT_NEAR(s.rained_volume(), p.rainfall * area * t, 1e-9 * p.rainfall * area * t);
+    EXPECT_NEAR(s.fluid_volume(), vf + s.rained_volume() - s.infiltrated_volume(), 1e-12 * vf);
+    if (infiltration == 0.0) {
+      EXPECT_EQ(s.infiltrated_volume(), 0.0);
+    } else {  // faster than the rain, but some cells ran dry: less than I A t
+      EXPECT_GT(s.infiltrated_volume(), s.rained_volume());
+      EXPECT_LT(s.infiltrated_volume(), infiltration * area * t);
+    }
+    EXPECT_GE(lowest, 0.0);
+    EXPECT_NEAR(s.solid_volume(), vs, 1e-12 * vs);
+  }
+}
+
+}  // namespace
+}  // namespace talus::runout

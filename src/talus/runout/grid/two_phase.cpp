@@ -57,6 +57,8 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
   if (p_.order != 1 && p_.order != 2) throw InputError("two-phase: order must be 1 or 2");
   if (!(p_.courant > 0.0 && p_.courant <= 0.5))
     throw InputError("two-phase: courant must be in (0, 0.5] (positivity of the MUSCL scheme)");
+  if (!(p_.rainfall >= 0.0) || !(p_.infiltration >= 0.0))
+    throw InputError("two-phase: rainfall and infiltration rates must be >= 0 (m/s)");
   if (p_.pressure.mode == EarthPressureMode::Hungr)
     throw InputError("two-phase: the 'hungr' earth-pressure law needs block strains (1D only)");
   TwoPhaseState s;
@@ -591,6 +593,27 @@ void TwoPhaseSolver::step(double dt) {
   s_.time += dt;
   outflow_s_ += 0.5 * (s1 + s2);
   outflow_f_ += 0.5 * (f1 + f2);
+  if (p_.rainfall > 0.0 || p_.infiltration > 0.0) rain_and_infiltrate(dt);
+}
+
+void TwoPhaseSolver::rain_and_infiltrate(double dt) {
+  // After the step (split): rain adds fluid without horizontal momentum;
+  // infiltration takes fluid, at most what the cell holds, with its velocity
+  // (the -I u_u of seed eqs. 52-53). Summed in cell order: the same bits on
+  // any team.
+  const auto& dom = terrain_.inside();
+  double rained = 0.0, infiltrated = 0.0;
+  for (std::size_t c = 0; c < s_.hf.size(); ++c) {
+    if (!dom[c]) continue;
+    const double wet = s_.hf[c] + dt * p_.rainfall;
+    const double taken = std::min(dt * p_.infiltration, wet);
+    const double keep = wet > 0.0 ? (wet - taken) / wet : 0.0;
+    s_.hf[c] = wet - taken;
+    s_.hfu[c] *= keep, s_.hfv[c] *= keep;
+    rained += dt * p_.rainfall, infiltrated += taken;
+  }
+  const double area = terrain_.shape().cell_area();
+  rained_ += rained * area, infiltrated_ += infiltrated * area;
 }
 
 }  // namespace talus::runout

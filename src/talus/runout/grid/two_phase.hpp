@@ -84,6 +84,8 @@ struct TwoPhaseParams {
   double tan_basal_friction = 0.0;  // tan(delta), the solid's Coulomb friction
   EarthPressure pressure{EarthPressureMode::SavageHutter};
   double manning = 0.0;          // n, s m^-1/3 (fluid)
+  double rainfall = 0.0;         // R, m/s of fluid depth on every cell of the domain
+  double infiltration = 0.0;     // I, m/s, at most the fluid a cell holds
   double viscosity_alpha = 0.0;  // Pa s, eta = alpha e^(beta alpha_s)
   double viscosity_beta = 0.0;   // -
   double shear_factor = 3.0;     // chi
@@ -120,6 +122,8 @@ class TwoPhaseSolver {
   double fluid_volume() const;
   double solid_outflow() const { return outflow_s_; }  // left through open edges
   double fluid_outflow() const { return outflow_f_; }
+  double rained_volume() const { return rained_; }  // m^3 of fluid added by rain
+  double infiltrated_volume() const { return infiltrated_; }
   double momentum_x() const;  // sum (rho_s H_s U_s + rho_f H_f U_f) dA
   double momentum_y() const;
   double max_speed() const;  // of either phase, horizontal
@@ -128,6 +132,7 @@ class TwoPhaseSolver {
   // The six fields of a cell: each phase's depth and x, y momentum.
   enum Field { kHs, kXs, kYs, kHf, kXf, kYf, kFields };
   void update_earth_pressure();
+  void rain_and_infiltrate(double dt);
   // c^2 / H of the fastest wave in cell c holding fluid_depth of fluid.
   double wave_coefficient(std::size_t c, double fluid_depth) const;
   void reconstruct(const TwoPhaseState& in);
@@ -146,6 +151,7 @@ class TwoPhaseSolver {
   std::vector<double> g_bed_solid_;  // its effective weight's, (1 - gamma) g cos^2
   double k_active_ = 1.0, k_passive_ = 1.0;
   double outflow_s_ = 0.0, outflow_f_ = 0.0;
+  double rained_ = 0.0, infiltrated_ = 0.0;
   // Per stage: primitive values, limited slopes (x, y) of H_s, H_f, the
   // surface and the four velocities, face fluxes with the hydrostatic
   // corrections of each side, the solid's held flags.
