@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "fv2d_helpers.hpp"
+#include "parabolic_cap.hpp"
 #include "point_mass.hpp"
 #include "talus/core/space.hpp"
 #include "talus/runout/grid/path_terrain.hpp"
@@ -33,32 +34,18 @@ struct CapRun {
   double centre, centre_exact, lambda, lambda_ode, l1;
 };
 
-// Savage & Hutter (1989), as in the DAN test: on a plane of inclination zeta
-// with bed friction delta and constant K a parabolic pile stays parabolic;
-// along the slope its centre moves with g (sin - tan cos) and its half-length
-// is lambda L0 with lambda'' = 2 K g cos h0 / (L0^2 lambda^2). Over the
-// horizontal plane (fv2d's frame) the pile is the same parabola with the
-// vertical thickness H = h / cos(zeta) and horizontal half-length
-// lambda L0 cos(zeta); its second moment about the centre is
-// (lambda L0 cos)^2 / 5. 1 m/s downslope at the start keeps all of it moving
-// downslope (one sign of friction) over the 1.5 s compared.
+// Savage & Hutter's parabolic cap (parabolic_cap.hpp) with K = k_a.
 CapRun cap_run(double dx) {
-  const double zeta = deg2rad(35), delta = deg2rad(25), h0 = 0.1, L0 = 1.0, u0 = 1.0;
-  const double K = earth_pressure_limits(deg2rad(35), std::tan(delta)).active;
-  const double c = std::cos(zeta);
-  GridShape g{static_cast<std::size_t>(std::lround(9.0 / dx)), 1, dx, dx};
-  auto bed = sample(g, [&](double x, double) { return -std::tan(zeta) * x; });
-  const double xc0 = 1.5;  // horizontal
-  auto depth = sample(g, [&](double x, double) {
-    const double r = (x - xc0) / (L0 * c);
-    return std::max(0.0, h0 / c * (1.0 - r * r));
-  });
+  const reference::ParabolicCap cap;
+  const double c = cap.cos_zeta(), K = cap.k();
+  const GridShape g = cap.grid(dx);
+  const auto depth = cap.depth(g);
   Fv2dParams p = testing::frictional(25.0, 35.0);
   p.pressure.mode = EarthPressureMode::Constant;
   p.pressure.constant = K;
-  Fv2dSolver s(Terrain(g, bed), p, depth);
+  Fv2dSolver s(Terrain(g, cap.bed(g)), p, depth);
   FlowState start = s.state();
-  for (std::size_t k = 0; k < g.cells(); ++k) start.hu[k] = depth[k] * u0 * c;
+  for (std::size_t k = 0; k < g.cells(); ++k) start.hu[k] = depth[k] * cap.u0 * c;
   s.set_state(start);
   double v0 = 0.0;  // per unit width of the strip
   for (double h : depth) v0 += h * dx;
@@ -69,16 +56,14 @@ CapRun cap_run(double dx) {
       if (f.state().h[k] > 1e-3) min_u = std::min(min_u, f.state().hu[k] / f.state().h[k]);
   });
   EXPECT_GT(min_u, 0.0);  // the analytic solution is valid throughout
-  const double lam = reference::savage_hutter_lambda(2 * K * kG * c * h0 / (L0 * L0), T);
-  const double a = kG * (std::sin(zeta) - std::tan(delta) * c);
-  const double xc = xc0 + (u0 * T + 0.5 * a * T * T) * c, xm = centre_x(s);
-  double m2 = 0.0, l1 = 0.0;
+  const double lam = cap.lambda(T), xc = cap.centre(T);
+  const auto computed = cap.moments(s.state().h, dx, v0);
+  double l1 = 0.0;
   for (std::size_t i = 0; i < g.nx; ++i) {
-    const double x = (i + 0.5) * dx, r = (x - xc) / (lam * L0 * c);
-    m2 += s.state().h[i] * dx * (x - xm) * (x - xm);
-    l1 += std::abs(s.state().h[i] - std::max(0.0, h0 / (lam * c) * (1 - r * r))) * dx;
+    const double x = (i + 0.5) * dx, r = (x - xc) / (lam * cap.L0 * c);
+    l1 += std::abs(s.state().h[i] - std::max(0.0, cap.h0 / (lam * c) * (1 - r * r))) * dx;
   }
-  const CapRun out{xm, xc, std::sqrt(5.0 * m2 / v0) / (L0 * c), lam, l1 / v0};
+  const CapRun out{computed.centre, xc, computed.lambda, lam, l1 / v0};
   std::printf("cap dx %.4f: centre %.5f (exact %.5f), lambda %.6f (ODE %.6f), L1 %.2e\n", dx,
               out.centre, out.centre_exact, out.lambda, out.lambda_ode, out.l1);
   return out;

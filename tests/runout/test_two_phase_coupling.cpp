@@ -3,6 +3,7 @@
 // alone against the drag law's ODE, the slip at which the drag balances a
 // constant force difference, and each phase's mass to round-off.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -201,28 +202,38 @@ TEST(TwoPhaseCoupling, DragBalancesAConstantForceDifference) {
   EXPECT_NEAR(slip, exact, 1e-6 * exact);  // e^-17 of the start (~4e-8) plus round-off
 }
 
-TEST(TwoPhaseCoupling, EachPhaseKeepsItsMassAndNothingOutrunsFreeFall) {
-  // A solid-fluid release on a bumpy slope between walls: with no rain or
-  // infiltration, each phase's volume is constant to round-off while the
-  // two separate, and depths stay non-negative.
+// A solid-fluid release on a bumpy slope between walls: the solid a lumpy
+// disc, the fluid a disc overlapping it.
+struct BumpyRelease {
   GridShape g{48, 40, 1.0, 1.0};
-  auto bed = sample(g, [](double x, double y) {
+  std::vector<double> bed = sample(g, [](double x, double y) {
     return -0.4 * x + 1.5 * std::sin(0.3 * x) * std::cos(0.25 * y) + 0.02 * y * y;
   });
-  auto solid = sample(g, [](double x, double y) {
+  std::vector<double> solid = sample(g, [](double x, double y) {
     const double r2 = (x - 12) * (x - 12) + (y - 20) * (y - 20);
     return r2 < 64 ? 1.2 + 0.3 * std::sin(x * y) : 0.0;
   });
-  auto fluid = sample(g, [](double x, double y) {
+  std::vector<double> fluid = sample(g, [](double x, double y) {
     const double r2 = (x - 14) * (x - 14) + (y - 18) * (y - 18);
     return r2 < 49 ? 0.8 : 0.0;
   });
-  TwoPhaseParams p;
-  p.tan_basal_friction = std::tan(deg2rad(18.0));
-  p.pressure.phi_internal = deg2rad(32.0);
-  p.pressure.tan_phi_basal = p.tan_basal_friction;
-  p.manning = 0.05, p.viscosity_alpha = 0.01, p.viscosity_beta = 10.0;
-  TwoPhaseSolver s(Terrain(g, bed), p, solid, fluid);
+  TwoPhaseSolver solver() const {
+    TwoPhaseParams p;
+    p.tan_basal_friction = std::tan(deg2rad(18.0));
+    p.pressure.phi_internal = deg2rad(32.0);
+    p.pressure.tan_phi_basal = p.tan_basal_friction;
+    p.manning = 0.05, p.viscosity_alpha = 0.01, p.viscosity_beta = 10.0;
+    return TwoPhaseSolver(Terrain(g, bed), p, solid, fluid);
+  }
+};
+
+TEST(TwoPhaseCoupling, EachPhaseKeepsItsMassAndNothingOutrunsFreeFall) {
+  // With no rain or infiltration, each phase's volume is constant to
+  // round-off while the two separate, and depths stay non-negative.
+  const BumpyRelease release;
+  const GridShape& g = release.g;
+  const std::vector<double>&bed = release.bed, &solid = release.solid, &fluid = release.fluid;
+  TwoPhaseSolver s = release.solver();
   const double vs = s.solid_volume(), vf = s.fluid_volume();
   // No part of the flow may outrun free fall from the highest surface to the
   // lowest bed, sqrt(2 g dz) (friction only slows it). Thin layers that the
@@ -249,11 +260,27 @@ TEST(TwoPhaseCoupling, EachPhaseKeepsItsMassAndNothingOutrunsFreeFall) {
   EXPECT_GE(min_depth, 0.0);
 }
 
-}  // namespace
-}  // namespace talus::runout
-
-namespace talus::runout {
-namespace {
+TEST(TwoPhaseCoupling, TwoThreadsGiveTheSameBits) {
+  // Every loop of the solver is per cell or per face (or a max), and sums
+  // run in cell order, so the release above on two threads gives the same
+  // state, bit for bit, as on one.
+  const BumpyRelease release;
+  TwoPhaseState state[2];
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    TwoPhaseSolver s = release.solver();
+    run_to(s, 2.0);
+    state[threads - 1] = s.state();
+  }
+  omp_set_num_threads(1);
+  EXPECT_EQ(state[0].time, state[1].time);
+  EXPECT_EQ(state[0].hs, state[1].hs);
+  EXPECT_EQ(state[0].hsu, state[1].hsu);
+  EXPECT_EQ(state[0].hsv, state[1].hsv);
+  EXPECT_EQ(state[0].hf, state[1].hf);
+  EXPECT_EQ(state[0].hfu, state[1].hfu);
+  EXPECT_EQ(state[0].hfv, state[1].hfv);
+}
 
 // A debris-flow release on a 25 deg plane (solid fraction 0.6, bed friction
 // 20 deg, Manning 0.03, drag, virtual mass, viscosity) on three grids.
@@ -333,12 +360,6 @@ TEST(TwoPhaseConvergence, DebrisReleaseOnAPlaneConvergesWithTheGrid) {
       r2.centre_f, r3.centre_f);
   EXPECT_GT(std::log2(e1 / e2), 0.5);
 }
-
-}  // namespace
-}  // namespace talus::runout
-
-namespace talus::runout {
-namespace {
 
 TEST(TwoPhaseSources, RainAndInfiltrationBalanceTheFluidsVolume) {
   // Continuity with R - I (seed eqs. 47, 49): on a closed bumpy basin the

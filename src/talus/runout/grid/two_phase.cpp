@@ -415,12 +415,11 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   const auto& cos2 = terrain_.cos2();
   reconstruct(in);
   face_fluxes(in);
-  // The explicit change of a cell's six fields over the stage: fluxes (the
-  // solid's only through faces `open`: west, east, south, north), the
-  // hydrostatic corrections, the interior bed terms of the reconstruction,
-  // the solid's remaining bed term and the non-conservative fraction terms.
-  // carried: when given, receives the part the faces carry (before the
-  // local terms are added).
+  // The explicit change of a cell's six fields over the stage: what its faces
+  // carry (fluxes, the solid's only through faces `open`: west, east, south,
+  // north; the fluid's hydrostatic corrections), then the local terms (the
+  // fluid's interior bed term, the solid's weight on the bed, buoyancy and
+  // the phases' coupling). carried: when given, receives the faces' part.
   auto explicit_change = [&](Index c, Index i, Index j, const bool open[4], double d[kFields],
                              double* carried = nullptr) {
     const Index w = j * (nx + 1) + i, e = w + 1, s = c, n = c + nx;
@@ -538,9 +537,6 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
         src.fluid_linear = rho_f > 0.0 ? dt * p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
         src.fluid_quadratic = dt * grav * p_.manning * p_.manning / (h * std::cbrt(h));
       }
-      // Virtual mass acts on a phase's acceleration: where most of a phase
-      // arrived during the stage, its change of cell velocity is mostly new
-      // material (and its velocity at the start, of a trace, meaningless).
       // Virtual mass acts on the phases' accelerations by the stage's local
       // forces (gravity, buoyancy, drag, friction, resistance), not on the
       // change of a cell's velocities by what its faces carry in and out.
@@ -553,9 +549,10 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
         }
       }
       apply_sources(col, src, solid_wet, fluid_wet);
-      ms[0] = col.ms[0], ms[1] = col.ms[1], mf[0] = col.mf[0], mf[1] = col.mf[1];
-      out.hsu[c] = ms[0], out.hsv[c] = ms[1], out.hfu[c] = mf[0], out.hfv[c] = mf[1];
-      if (!std::isfinite(h) || !std::isfinite(ms[0] + ms[1] + mf[0] + mf[1])) finite = false;
+      out.hsu[c] = col.ms[0], out.hsv[c] = col.ms[1], out.hfu[c] = col.mf[0],
+      out.hfv[c] = col.mf[1];
+      if (!std::isfinite(h) || !std::isfinite(col.ms[0] + col.ms[1] + col.mf[0] + col.mf[1]))
+        finite = false;
     }
   }
   if (!finite)

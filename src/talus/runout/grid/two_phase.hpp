@@ -45,8 +45,8 @@
 //   k_p in the balance its errors were multiplied by k_p at fronts).
 // - Each phase's fluxes out of a cell are scaled down to what the cell holds
 //   (depths never negative, mass still exact: fluxes cancel pairwise).
-// - Stiff sources implicitly, after the explicit update of a stage (see
-//   apply_sources in the .cpp): the fluid's Manning and laminar resistance,
+// - Stiff sources implicitly, after the explicit update of a stage
+//   (apply_sources, two_phase_sources.hpp): the fluid's Manning and laminar resistance,
 //   the drag (momentum conserving, implicit in the relative velocity), the
 //   solid's Coulomb friction as an impulse shared through that implicit drag
 //   (stops, never reverses; a solid at rest stays held while friction can

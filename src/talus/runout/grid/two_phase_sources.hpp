@@ -30,7 +30,8 @@ struct Column {
 // The stage's implicit sources of a cell, each already times dt: the drag
 // (dt H C), the solid's Coulomb friction (per unit solid density), the
 // fluid's laminar (linear) and Manning (quadratic) resistance; the virtual
-// mass factor r with the relative velocity at the stage's start.
+// mass factor r with the relative velocity before the local forces acted
+// (after what the cell's faces carried).
 struct ColumnSources {
   double rho_s = 0.0, rho_f = 0.0;
   int exponent = 1;
@@ -41,7 +42,7 @@ struct ColumnSources {
 // In this order: the fluid's resistance; the drag, implicit in the relative
 // velocity (momentum conserving); the solid's friction as an impulse shared
 // through that implicit drag (it stops the solid, never reverses it); then
-// virtual mass scales the stage's change of the relative velocity. With the
+// virtual mass scales the change of the relative velocity since rel_before. With the
 // friction inside the implicit coupling, the slip at which a constant force
 // difference balances the drag is the stage's fixed point exactly.
 // solid / fluid: the phase moves (wet and not held by friction).
