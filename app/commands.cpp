@@ -94,7 +94,7 @@ std::string kind_of(const toml::table& t) {
   const std::string method = t["method"].value_or(std::string("?"));
   if (method == "runout") {
     const std::string model = t["run"]["model"].value_or(std::string("dan"));
-    return fmt::format("runout {} {}D", model, model == "fv2d" ? 2 : 1);
+    return fmt::format("runout {} {}D", model, model == "dan" ? 1 : 2);
   }
   if (const auto dim = t["run"]["dimension"].value<int64_t>())
     return fmt::format("{} {}D", method, *dim);

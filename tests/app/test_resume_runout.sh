@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# DAN and fv2d runs killed with SIGKILL after a checkpoint and resumed with
-# --resume end as an uninterrupted run does (issue 28 §2): the series, the
-# results (DAN: front.csv, deposit.csv, the last block snapshot; fv2d: the
-# maxima and deposit rasters) are byte-identical, and so are summary.json's
-# metrics (peaks, arrival, run-up, released volume). Args: <talus binary> <source dir>.
+# DAN, fv2d and two-phase runs killed with SIGKILL after a checkpoint and
+# resumed with --resume end as an uninterrupted run does (issue 28 §2): the
+# series, the results (DAN: front.csv, deposit.csv, the last block snapshot;
+# fv2d: the maxima and deposit rasters; two-phase: every map of each phase)
+# are byte-identical, and so are summary.json's metrics (peaks, arrival,
+# run-up, released volume). Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
 
 same() {  # name, file in both run folders
@@ -50,6 +51,20 @@ same fv2d "snapshots/$last"
 same fv2d "snapshots/${last/height/speed}"
 same fv2d "snapshots/$(ls "$tmp/fv2d-full"/snapshots/flow_*.vtu | tail -1 | xargs basename)"
 same_metrics fv2d
+
+killed_and_resumed two_phase "$src/tests/data/scenarios/two_phase_resume.toml"
+for f in series.csv max_height max_solid_height max_fluid_height max_solid_speed max_fluid_speed \
+  max_pressure max_solid_pressure max_fluid_pressure arrival_time deposit deposit_solid \
+  deposit_fluid solid_fraction; do
+  [ "$f" = series.csv ] && same two_phase $f || same two_phase $f.npy
+done
+for f in snapshots/times.csv snapshots/flow.pvd; do same two_phase $f; done
+last=$(ls "$tmp/two_phase-full"/snapshots/height_*.tif | tail -1 | xargs basename)
+check "two_phase: snapshots after the checkpoint ($last)" '[ "$last" != height_000001.tif ]'
+for field in height solid_fraction solid_speed fluid_speed; do
+  same two_phase "snapshots/${last/height/$field}"
+done
+same_metrics two_phase
 
 # A runout folder without a checkpoint: the usual refusal, naming the key.
 mkdir -p "$tmp/none" && cp "$tmp/dan-full/scenario.toml" "$tmp/none/"

@@ -40,7 +40,7 @@ void expect_runout_error(const std::string& name, const std::string& from, const
 TEST(Refusals, TablesOfTheOtherRunoutModel) {
   expect_runout_error("runout_flume_A.toml", "[output]",
                       "[terrain] # <-\nfile = \"runout_terrain/terrain.asc\"\n[output]",
-                      "'terrain': is only used by model 'fv2d'");
+                      "'terrain': is only used by models 'fv2d' and 'two_phase'");
   expect_runout_error("runout_terrain_2d.toml", "[output]",
                       "[path] # <-\ntype = \"flume\"\nbeta = 33\narc_radius = 0.1\n[output]",
                       "'path': is not used by model 'fv2d'");

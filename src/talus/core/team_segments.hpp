@@ -85,4 +85,23 @@ class TeamSize {
   int threads_;
 };
 
+// Up to max_steps steps in segments, each with the team `segments` picks:
+// `step()` takes one step and returns true, or returns false without stepping
+// when the caller is done (its target reached, the run stopped). For methods
+// whose every loop is per cell or a max, so the bits do not depend on the team.
+template <class Step>
+void step_in_segments(int threads, TeamSegments& segments, int64_t max_steps, Step&& step) {
+  TeamSize size(threads);
+  for (int64_t taken = 0; taken < max_steps;) {
+    const int64_t segment = segments.begin(max_steps - taken);
+    size.set(segments.team());
+    int64_t stepped = 0;
+    bool more = true;
+    while (stepped < segment && (more = step())) ++stepped;
+    taken += stepped;
+    segments.end(stepped);
+    if (!more || stepped == 0) break;
+  }
+}
+
 }  // namespace talus

@@ -61,6 +61,18 @@ void transfer(Ar& ar, FlowState& s, std::vector<double>& k, double& outflow, Fv2
   ar(released_volume);
 }
 
+template <class Ar>
+void transfer(Ar& ar, TwoPhaseState& s, std::vector<double>& k, TwoPhaseTotals& t,
+              TwoPhaseMaxima& m, ReleasedVolumes& released) {
+  ar(s.hs), ar(s.hsu), ar(s.hsv), ar(s.hf), ar(s.hfu), ar(s.hfv), ar(s.time);
+  ar(k), ar(t.solid_outflow), ar(t.fluid_outflow), ar(t.rained), ar(t.infiltrated);
+  for (auto* v : {&m.height, &m.solid_height, &m.fluid_height, &m.solid_speed, &m.fluid_speed,
+                  &m.pressure, &m.solid_pressure, &m.fluid_pressure, &m.arrival})
+    ar(*v);
+  ar(m.peak_speed), ar(m.peak_height);
+  ar(released.solid), ar(released.fluid);
+}
+
 }  // namespace
 
 void save_checkpoint(const DanModel& model, const RunoutTracker& tracker, StepCount count,
@@ -126,6 +138,45 @@ StepCount load_checkpoint(Fv2dSolver& solver, Fv2dMaxima& maxima, double& releas
     throw InputError(where + "the checkpoint's grid is not this scenario's");
   try {
     solver.restore(s, std::move(k), outflow);
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
+  }
+  maxima = std::move(m);
+  return count;
+}
+
+void save_checkpoint(const TwoPhaseSolver& solver, const TwoPhaseMaxima& maxima,
+                     ReleasedVolumes released, StepCount count, const std::filesystem::path& path) {
+  io::ArchiveWriter w;
+  put_header(w, "two_phase", count);
+  TwoPhaseState s = solver.state();
+  std::vector<double> k = solver.earth_pressure();
+  TwoPhaseTotals t = solver.totals();
+  TwoPhaseMaxima m = maxima;
+  io::ArchiveSaver save{w};
+  transfer(save, s, k, t, m, released);
+  w.save(path);
+}
+
+StepCount load_checkpoint(TwoPhaseSolver& solver, TwoPhaseMaxima& maxima, ReleasedVolumes& released,
+                          const std::filesystem::path& path) {
+  const std::string where = path.string() + ": ";
+  io::ArchiveReader r(path);
+  const StepCount count = get_header(r, "two_phase", where);
+  TwoPhaseState s;
+  std::vector<double> k;
+  TwoPhaseTotals t;
+  TwoPhaseMaxima m;
+  io::ArchiveLoader load{r};
+  transfer(load, s, k, t, m, released);
+  check_end(r, where);
+  const std::size_t cells = solver.terrain().shape().cells();
+  for (const auto* v : {&m.height, &m.solid_height, &m.fluid_height, &m.solid_speed, &m.fluid_speed,
+                        &m.pressure, &m.solid_pressure, &m.fluid_pressure, &m.arrival})
+    if (v->size() != cells)
+      throw InputError(where + "the checkpoint's grid is not this scenario's");
+  try {
+    solver.restore(s, std::move(k), t);
   } catch (const InputError& e) {
     throw InputError(where + e.what());
   }

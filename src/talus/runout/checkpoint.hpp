@@ -6,13 +6,15 @@
 // coefficients, time), the energy check's memory and the tracker's results
 // (front samples, maxima, arrival, run-up). fv2d: the flow state, the
 // earth-pressure coefficients, the outflow, the per-cell maxima and the
-// released volume.
+// released volume. Two-phase: the same for both phases, with the rain and
+// infiltration totals.
 #include <cstdint>
 #include <filesystem>
 
 #include "talus/runout/dan.hpp"
 #include "talus/runout/grid/fv2d.hpp"
 #include "talus/runout/grid/fv2d_maxima.hpp"
+#include "talus/runout/grid/two_phase_maxima.hpp"
 #include "talus/runout/results.hpp"
 
 namespace talus::runout {
@@ -33,6 +35,16 @@ StepCount load_checkpoint(DanModel& model, RunoutTracker& tracker,
 void save_checkpoint(const Fv2dSolver& solver, const Fv2dMaxima& maxima, double released_volume,
                      StepCount count, const std::filesystem::path& path);
 StepCount load_checkpoint(Fv2dSolver& solver, Fv2dMaxima& maxima, double& released_volume,
+                          const std::filesystem::path& path);
+
+// Released volumes of each phase, for the figures of a resumed run.
+struct ReleasedVolumes {
+  double solid = 0.0, fluid = 0.0;
+};
+
+void save_checkpoint(const TwoPhaseSolver& solver, const TwoPhaseMaxima& maxima,
+                     ReleasedVolumes released, StepCount count, const std::filesystem::path& path);
+StepCount load_checkpoint(TwoPhaseSolver& solver, TwoPhaseMaxima& maxima, ReleasedVolumes& released,
                           const std::filesystem::path& path);
 
 }  // namespace talus::runout

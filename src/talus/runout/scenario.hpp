@@ -9,6 +9,7 @@
 #include "talus/geometry/flume.hpp"
 #include "talus/runout/dan.hpp"
 #include "talus/runout/grid/fv2d.hpp"
+#include "talus/runout/grid/two_phase.hpp"
 
 namespace talus::runout {
 
@@ -34,10 +35,22 @@ struct ReleaseSpec {
   std::size_t blocks = 100;               // boundary blocks
 };
 
-// [run] model: "dan" (1D along a path) or "fv2d" (2D on a terrain grid).
-enum class RunoutModel { Dan, Fv2d };
+// [run] model: "dan" (1D along a path), "fv2d" (2D on a terrain grid) or
+// "two_phase" (2D solid-fluid on a terrain grid).
+enum class RunoutModel { Dan, Fv2d, TwoPhase };
 
-// The 2D model's grids, read from rasters by io (all on the terrain's grid):
+// The two-phase model's inputs besides the grid's (model = "two_phase"): the
+// phases, the closures and the rates (m/s in params, mm/h in the file), and
+// the release's solid fraction alpha_s, a constant or a raster on the
+// terrain's grid (io fills both).
+struct TwoPhaseSpec {
+  TwoPhaseParams params;
+  double solid_fraction = 0.5;
+  std::string solid_fraction_file, rainfall_file, infiltration_file;
+  std::vector<double> solid_fraction_map;  // per cell; empty: the constant
+};
+
+// The 2D models' grids, read from rasters by io (all on the terrain's grid):
 // bed elevation (NaN where the terrain raster has no data: outside the
 // domain), obstacle heights added to it (a barrier), and the released
 // thickness (measured vertically; no-data cells are 0).
@@ -74,7 +87,8 @@ struct RunoutControl {
 struct RunoutScenario {
   std::string name, description;
   RunoutModel model = RunoutModel::Dan;
-  GridSpec grid;  // model = fv2d
+  GridSpec grid;  // model = fv2d or two_phase
+  TwoPhaseSpec two_phase;
   DanParams params;
   PathSpec path;
   ReleaseSpec release;

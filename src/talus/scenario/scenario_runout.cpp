@@ -16,6 +16,8 @@
 #include "talus/io/raster_resample.hpp"
 #include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
+#include "talus/scenario/scenario_grid_rasters.hpp"
+#include "talus/scenario/scenario_two_phase.hpp"
 
 namespace talus::io {
 namespace {
@@ -25,16 +27,22 @@ using detail::non_negative;
 using detail::number_in;
 using detail::positive;
 using detail::required_number_in;
+using grid_rasters::GridRole;
+using grid_rasters::mark_domain;
+using grid_rasters::read_grid;
 using runout::EarthPressureMode;
 using runout::PathKind;
 using runout::ReleaseKind;
 
 const std::vector<std::string_view> kTopLevelKeys = {
-    "method",         "name",      "description", "run",    "path",   "material",
-    "earth_pressure", "smoothing", "release",     "output", "terrain"};
+    "method",  "name",   "description", "run",   "path",  "material", "earth_pressure", "smoothing",
+    "release", "output", "terrain",     "solid", "fluid", "drag",     "hydrology"};
 using runout::GridBoundary;
 using runout::RunoutModel;
-const EnumNames<RunoutModel> kModels = {{"dan", RunoutModel::Dan}, {"fv2d", RunoutModel::Fv2d}};
+const EnumNames<RunoutModel> kModels = {
+    {"dan", RunoutModel::Dan}, {"fv2d", RunoutModel::Fv2d}, {"two_phase", RunoutModel::TwoPhase}};
+
+bool on_grid(RunoutModel m) { return m != RunoutModel::Dan; }
 const EnumNames<GridBoundary> kBoundaries = {{"wall", GridBoundary::Wall},
                                              {"open", GridBoundary::Open}};
 const EnumNames<PathKind> kPathKinds = {{"flume", PathKind::Flume}, {"profile", PathKind::Profile}};
@@ -49,7 +57,7 @@ const EnumNames<runout::PressureForm> kPressureForms = {
 
 void read_run(TomlReader& r, runout::RunoutScenario& s) {
   s.model = r.enumeration("model", kModels, RunoutModel::Dan);
-  const bool grid = s.model == RunoutModel::Fv2d;
+  const bool grid = on_grid(s.model);
   auto& c = s.control;
   c.duration = required_number_in(r, "duration", positive());
   if (r.is_string("time_step")) {
@@ -64,10 +72,14 @@ void read_run(TomlReader& r, runout::RunoutScenario& s) {
     // The MUSCL scheme keeps depths positive up to 0.5 (fv2d.hpp).
     c.courant = number_in(r, "courant", 0.45, between(0.0, 0.5, true, false));
     s.grid.max_time_step = number_in(r, "max_time_step", s.grid.max_time_step, positive());
-    c.stop_momentum_fraction = number_in(r, "stop_momentum_fraction", c.stop_momentum_fraction,
-                                         between(0.0, 1.0, false, true));
+    if (s.model == RunoutModel::TwoPhase)
+      r.reject({"stop_momentum_fraction"}, "is only used by model 'fv2d'");
+    else
+      c.stop_momentum_fraction = number_in(r, "stop_momentum_fraction", c.stop_momentum_fraction,
+                                           between(0.0, 1.0, false, true));
   } else {
-    r.reject({"max_time_step", "stop_momentum_fraction"}, "is only used by model 'fv2d'");
+    r.reject({"max_time_step", "stop_momentum_fraction"},
+             "is only used by the grid models 'fv2d' and 'two_phase'");
     c.courant = number_in(r, "courant", c.courant, between(0.0, 1.0, true, false));
   }
   s.params.gravity = number_in(r, "gravity", s.params.gravity, positive());
@@ -108,21 +120,24 @@ void read_material(TomlReader& r, runout::DanParams& d) {
   r.finish();
 }
 
-void read_earth_pressure(TomlReader& r, runout::DanParams& d, bool grid) {
+void read_earth_pressure(TomlReader& r, runout::DanParams& d, RunoutModel model) {
   runout::EarthPressure& e = d.pressure;
+  const bool grid = on_grid(model);
+  const std::string name = detail::name_of(kModels, model);
   if (grid)
-    r.reject({"form"}, "is not used by model 'fv2d' (its fluxes are the divergence form)");
+    r.reject({"form"},
+             fmt::format("is not used by model '{}' (its fluxes are the divergence form)", name));
   else
     d.pressure_form = r.enumeration("form", kPressureForms, d.pressure_form);
   e.mode = r.enumeration("model", kPressureModes,
                          grid ? EarthPressureMode::SavageHutter : EarthPressureMode::Hungr);
   if (grid) {
     if (e.mode == EarthPressureMode::Hungr)
-      r.fail("model",
-             "the 'hungr' law needs block strains (1D); model 'fv2d' takes "
-             "'savage_hutter' or 'constant'");
+      r.fail("model", fmt::format("the 'hungr' law needs block strains (1D); model '{}' takes "
+                                  "'savage_hutter' or 'constant'",
+                                  name));
     r.reject({"lambda", "modify_basal_angle", "passive_strain", "initial"},
-             "is not used by model 'fv2d' (k_a / k_p from the flow's divergence)");
+             fmt::format("is not used by model '{}' (k_a / k_p from the flow's divergence)", name));
   }
   if (e.mode == EarthPressureMode::Constant) {
     r.reject({"lambda", "passive_strain", "initial", "modify_basal_angle"},
@@ -166,127 +181,11 @@ void read_release(TomlReader& r, const runout::PathSpec& path, runout::ReleaseSp
   r.finish();
 }
 
-// The terrain fixes the grid and the CRS: square cells in metres.
-void take_terrain_grid(TomlReader& r, std::string_view key, const std::string& file,
-                       const Raster& raster, runout::GridSpec& g) {
-  if (const std::string why = crs_not_metric(raster.projection); !why.empty())
-    r.fail(key, fmt::format("{}: {}", file, why));
-  if (std::abs(raster.dx - raster.dy) > 1e-9 * raster.dx)
-    r.fail(key, fmt::format("{}: cells of {} x {} m; expected square cells (resample it, e.g. "
-                            "gdalwarp -tr {} {})",
-                            file, raster.dx, raster.dy, raster.dx, raster.dx));
-  g.shape = {raster.nx, raster.ny, raster.dx, raster.dy};
-  g.x_west = raster.x_west, g.y_north = raster.y_north, g.projection = raster.projection;
-}
-
-// The terrain's grid as an empty raster.
-Raster terrain_grid(const runout::GridSpec& g) {
-  Raster ref;
-  ref.nx = g.shape.nx, ref.ny = g.shape.ny, ref.dx = g.shape.dx, ref.dy = g.shape.dy;
-  ref.x_west = g.x_west, ref.y_north = g.y_north;
-  return ref;
-}
-
-void check_terrain_crs(TomlReader& r, std::string_view key, const std::string& file,
-                       const Raster& raster, const runout::GridSpec& g) {
-  if (const std::string why = crs_mismatch(raster.projection, g.projection); !why.empty())
-    r.fail(key, fmt::format("{}: {}", file, why));
-}
-
-// Another raster must lie on the terrain's grid, in its CRS.
-void check_on_terrain_grid(TomlReader& r, std::string_view key, const std::string& file,
-                           const Raster& raster, const runout::GridSpec& g) {
-  check_terrain_crs(r, key, file, raster, g);
-  const Raster ref = terrain_grid(g);
-  if (!same_grid(raster, ref))
-    r.fail(key,
-           fmt::format("{}: the grid ({} x {} cells of {} x {} m) is not the terrain's "
-                       "({} x {} cells of {} m, same corner)",
-                       file, raster.nx, raster.ny, raster.dx, raster.dy, ref.nx, ref.ny, ref.dx));
-}
-
-// The release on another grid of the terrain's CRS, averaged onto the
-// terrain's cells by area (raster_resample.hpp); refused when part of its
-// volume lies beyond the terrain.
-std::vector<double> release_on_terrain_grid(TomlReader& r, std::string_view key,
-                                            const std::string& file, const Raster& release,
-                                            runout::GridSpec& g) {
-  const Raster ref = terrain_grid(g);
-  std::vector<double> depth = resample_area_weighted(release, ref);
-  double on_terrain = 0.0;
-  for (double d : depth) on_terrain += d;
-  on_terrain *= ref.dx * ref.dy;
-  const double total = raster_integral(release);
-  if (std::abs(total - on_terrain) > 1e-9 * total)
-    r.fail(key, fmt::format("{}: {:.6g} m^3 of the {:.6g} m^3 released lie beyond the terrain's "
-                            "extent; expected a release inside the terrain",
-                            file, total - on_terrain, total));
-  g.release_resampling = fmt::format(
-      "area-weighted average of {} x {} cells of {} x {} m onto the terrain's {} m cells (volume "
-      "kept: {:.6g} m^3)",
-      release.nx, release.ny, release.dx, release.dy, ref.dx, on_terrain);
-  return depth;
-}
-
-// A raster on the terrain's grid (or the terrain itself when `terrain`);
-// no-data cells become 0, except in the terrain where they become NaN (outside
-// the domain). A NaN is a no-data cell only when the raster says so (no-data
-// value NaN). With `resample` (the release) a raster on another grid is
-// averaged onto the terrain's.
-std::vector<double> read_grid(TomlReader& r, std::string_view key, const detail::DemContext& ctx,
-                              std::string& file, runout::GridSpec& g, bool terrain,
-                              bool resample = false) {
-  file = detail::required_file(r, key, ctx);
-  Raster raster;
-  try {
-    raster = read_raster(file);
-  } catch (const InputError& e) {
-    r.fail(key, e.what());
-  }
-  if (terrain)
-    take_terrain_grid(r, key, file, raster, g);
-  else if (resample)
-    check_terrain_crs(r, key, file, raster, g);
-  else
-    check_on_terrain_grid(r, key, file, raster, g);
-  for (std::size_t j = 0; j < raster.ny; ++j)
-    for (std::size_t i = 0; i < raster.nx; ++i) {
-      double& v = raster.at(i, j);
-      const std::string cell = fmt::format("{}: cell (column {}, row {})", file, i, j);
-      if (raster.is_nodata(v)) {
-        v = terrain ? std::numeric_limits<double>::quiet_NaN() : 0.0;
-      } else if (!std::isfinite(v)) {
-        r.fail(key, fmt::format("{} is {}; expected a number (or declare NaN the raster's no-data "
-                                "value)",
-                                cell, v));
-      } else if (!terrain && v < 0.0) {
-        r.fail(key, fmt::format("{} is negative ({})", cell, v));
-      }
-    }
-  if (resample && !same_grid(raster, terrain_grid(g)))
-    return release_on_terrain_grid(r, key, file, raster, g);
-  return std::move(raster.values);
-}
-
-// The terrain's no-data cells lie outside the domain.
-void mark_domain(TomlReader& r, runout::GridSpec& g) {
-  std::size_t inside = 0;
-  g.inside.assign(g.elevation.size(), 1);
-  for (std::size_t c = 0; c < g.elevation.size(); ++c) {
-    if (std::isnan(g.elevation[c]))
-      g.inside[c] = 0;
-    else
-      ++inside;
-  }
-  if (inside == 0)
-    r.fail("file", fmt::format("{}: every cell is no-data; expected elevations", g.terrain_file));
-  if (inside == g.elevation.size()) g.inside.clear();
-}
-
 void read_terrain(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
-  g.elevation = read_grid(r, "file", ctx, g.terrain_file, g, true);
+  g.elevation = read_grid(r, "file", ctx, g.terrain_file, g, GridRole::Terrain);
   mark_domain(r, g);
-  if (r.has("obstacles")) g.obstacles = read_grid(r, "obstacles", ctx, g.obstacles_file, g, false);
+  if (r.has("obstacles"))
+    g.obstacles = read_grid(r, "obstacles", ctx, g.obstacles_file, g, GridRole::OnGrid);
   g.boundary = r.enumeration("boundary", kBoundaries, g.boundary);
   const auto order = r.integer("order", g.order);
   r.expect(order == 1 || order == 2, "order", "1 (first order) or 2 (MUSCL)");
@@ -295,25 +194,27 @@ void read_terrain(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec
   r.finish();
 }
 
-void read_grid_release(TomlReader& r, const detail::DemContext& ctx, runout::GridSpec& g) {
+void read_grid_release(TomlReader& r, const detail::DemContext& ctx, runout::RunoutScenario& s) {
+  runout::GridSpec& g = s.grid;
   r.required_enum<int>("type", {{"raster", 0}});
-  g.release_depth = read_grid(r, "file", ctx, g.release_file, g, false, true);
+  g.release_depth = read_grid(r, "file", ctx, g.release_file, g, GridRole::Resampled);
   for (std::size_t c = 0; c < g.inside.size(); ++c)
     if (!g.inside[c] && g.release_depth[c] > 0.0)
       r.fail("file", fmt::format("{}: cell (column {}, row {}) releases {} m where the terrain "
                                  "({}) has no elevation; expected 0 or no-data outside the terrain",
                                  g.release_file, c % g.shape.nx, c / g.shape.nx, g.release_depth[c],
                                  g.terrain_file));
+  if (s.model == RunoutModel::TwoPhase) two_phase_keys::read_release_fractions(r, ctx, s);
   r.finish();
 }
 
 void read_output(TomlReader& r, runout::RunoutScenario& s) {
   s.control.series_interval = number_in(r, "series_interval", 0.01, positive());
   s.control.checkpoint_interval = number_in(r, "checkpoint_interval", 0.0, non_negative());
-  if (s.model == RunoutModel::Fv2d) {
+  if (on_grid(s.model)) {
     // Snapshot maps are large: none unless asked for.
     s.control.snapshot_interval = number_in(r, "snapshot_interval", 0.0, non_negative());
-    r.reject({"tail_fraction"}, "is not used by model 'fv2d'");
+    r.reject({"tail_fraction"}, "is not used by the grid models 'fv2d' and 'two_phase'");
     r.finish();
     return;
   }
@@ -404,27 +305,41 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
 
   TomlReader run = root.required_table("run");
   read_run(run, s);
-  const bool grid = s.model == RunoutModel::Fv2d;
+  const bool grid = on_grid(s.model), two_phase = s.model == RunoutModel::TwoPhase;
+  const std::string model = detail::name_of(kModels, s.model);
   if (grid) {
-    root.reject({"path", "smoothing"}, "is not used by model 'fv2d' (the terrain is [terrain])");
+    root.reject({"path", "smoothing"},
+                fmt::format("is not used by model '{}' (the terrain is [terrain])", model));
     TomlReader terrain = root.required_table("terrain");
     read_terrain(terrain, ctx, s.grid);
   } else {
-    root.reject({"terrain"}, "is only used by model 'fv2d' (set run.model = \"fv2d\")");
+    root.reject({"terrain"},
+                "is only used by models 'fv2d' and 'two_phase' (set run.model = \"fv2d\")");
     TomlReader path = root.required_table("path");
     read_path(path, ctx, s.path);
   }
-  TomlReader material = root.required_table("material");
-  read_material(material, s.params);
+  if (two_phase) {
+    root.reject({"material"}, "is not used by model 'two_phase' (it reads [solid] and [fluid])");
+    two_phase_keys::read_tables(root, ctx, s);
+  } else {
+    root.reject({"solid", "fluid", "drag", "hydrology"}, "is only used by model 'two_phase'");
+    TomlReader material = root.required_table("material");
+    read_material(material, s.params);
+  }
   TomlReader pressure = table_or_empty(root, "earth_pressure", empty);
-  read_earth_pressure(pressure, s.params, grid);
+  read_earth_pressure(pressure, s.params, s.model);
+  if (two_phase) {
+    // The solid's angles are [solid]'s; the law and k are [earth_pressure]'s.
+    auto& e = s.two_phase.params.pressure;
+    e.mode = s.params.pressure.mode, e.constant = s.params.pressure.constant;
+  }
   if (!grid) {
     TomlReader smoothing = table_or_empty(root, "smoothing", empty);
     read_smoothing(smoothing, s.params.smoothing);
   }
   TomlReader release = root.required_table("release");
   if (grid)
-    read_grid_release(release, ctx, s.grid);
+    read_grid_release(release, ctx, s);
   else
     read_release(release, s.path, s.release);
   TomlReader output = table_or_empty(root, "output", empty);
@@ -436,7 +351,7 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
 nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) {
   using Json = nlohmann::ordered_json;
   const auto& p = s.params;
-  const bool grid = s.model == RunoutModel::Fv2d;
+  const bool grid = on_grid(s.model), two_phase = s.model == RunoutModel::TwoPhase;
   Json run = {{"model", detail::name_of(kModels, s.model)}, {"duration", s.control.duration}};
   run["time_step"] = s.control.time_step > 0 ? Json(s.control.time_step) : Json("auto");
   run["courant"] = s.control.courant;
@@ -444,7 +359,7 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
   run["stop_at_rest"] = s.control.stop_at_rest;
   if (grid) {
     run["max_time_step"] = s.grid.max_time_step;
-    run["stop_momentum_fraction"] = s.control.stop_momentum_fraction;
+    if (!two_phase) run["stop_momentum_fraction"] = s.control.stop_momentum_fraction;
   }
   Json path = {{"type", detail::name_of(kPathKinds, s.path.kind)}, {"spacing", s.path.spacing}};
   if (s.path.kind == PathKind::Flume) {
@@ -479,18 +394,19 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
     terrain["boundary"] = detail::name_of(kBoundaries, s.grid.boundary);
     terrain["order"] = s.grid.order;
     terrain["dry_depth"] = s.grid.dry_depth;
-    return Json{{"method", "runout"},
-                {"name", s.name},
-                {"description", s.description},
-                {"run", run},
-                {"terrain", terrain},
-                {"material", material},
-                {"earth_pressure", pressure},
-                {"release", {{"type", "raster"}, {"file", s.grid.release_file}}},
-                {"output",
-                 {{"series_interval", s.control.series_interval},
-                  {"snapshot_interval", s.control.snapshot_interval},
-                  {"checkpoint_interval", s.control.checkpoint_interval}}}};
+    Json root = {{"method", "runout"},
+                 {"name", s.name},
+                 {"description", s.description},
+                 {"run", run},
+                 {"terrain", terrain}};
+    if (!two_phase) root["material"] = material;
+    root["earth_pressure"] = pressure;
+    root["release"] = {{"type", "raster"}, {"file", s.grid.release_file}};
+    if (two_phase) two_phase_keys::write(root, s);
+    root["output"] = {{"series_interval", s.control.series_interval},
+                      {"snapshot_interval", s.control.snapshot_interval},
+                      {"checkpoint_interval", s.control.checkpoint_interval}};
+    return root;
   }
   Json smoothing = {{"enabled", p.smoothing.enabled},
                     {"c_end", p.smoothing.c_end},

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
@@ -21,25 +20,6 @@ Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
       threads_(threads),
       segments_(threads) {}
 
-namespace {
-
-// The method's files, and checkpoint.bin at the checkpoint times.
-class Fv2dFiles final : public Forward<runout::Fv2dOutputs, runout::Fv2dSolver> {
- public:
-  Fv2dFiles(runout::Fv2dOutputs& files, const runout::Fv2dSolver& solver,
-            std::function<void()> save)
-      : Forward(files, solver), save_(std::move(save)) {}
-  void on_checkpoint() override {
-    target_.flush();
-    save_();
-  }
-
- private:
-  std::function<void()> save_;
-};
-
-}  // namespace
-
 void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
   checkpoint_ = out / "checkpoint.bin";
   if (resume) {
@@ -48,9 +28,10 @@ void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
   }
   files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid, resume, time(),
                                                  scenario_.control.snapshot_interval > 0.0);
-  outputs_ = std::make_unique<Fv2dFiles>(*files_, solver_, [this] {
-    runout::save_checkpoint(solver_, maxima_, initial_volume_, {steps_, last_dt_}, checkpoint_);
-  });
+  outputs_ = std::make_unique<FilesWithCheckpoint<runout::Fv2dOutputs, runout::Fv2dSolver>>(
+      *files_, solver_, [this] {
+        runout::save_checkpoint(solver_, maxima_, initial_volume_, {steps_, last_dt_}, checkpoint_);
+      });
 }
 
 Schedules Fv2dSimulation::schedules() const {
@@ -77,33 +58,23 @@ void Fv2dSimulation::start(bool fresh) {
 // of the solver is per cell, or a max, so the bits are the same either way.
 void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_steps) {
   const double end = end_time();
-  TeamSize size(threads_);
-  for (std::int64_t taken = 0; taken < max_steps && !stopped_;) {
-    const std::int64_t segment = segments_.begin(max_steps - taken);
-    size.set(segments_.team());
-    std::int64_t stepped = 0;
-    bool reached = false;
-    for (; stepped < segment && !stopped_; ++stepped) {
-      const double t = solver_.state().time;
-      reached = t >= target - tolerance || t >= end - tolerance;
-      if (reached) break;
-      const double dt =
-          std::min({solver_.stable_time_step(), scenario_.grid.max_time_step, end - t, target - t});
-      solver_.step(dt);
-      last_dt_ = dt;
-      ++steps_;
-      maxima_.observe(solver_);
-      stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
-      if (const double f = scenario_.control.stop_momentum_fraction; f > 0.0 && !stopped_) {
-        const double momentum = solver_.momentum_sum();
-        maxima_.peak_momentum = std::max(maxima_.peak_momentum, momentum);
-        stopped_ = momentum_stop_ = momentum < f * maxima_.peak_momentum;
-      }
+  step_in_segments(threads_, segments_, max_steps, [&] {
+    const double t = solver_.state().time;
+    if (stopped_ || t >= target - tolerance || t >= end - tolerance) return false;
+    const double dt =
+        std::min({solver_.stable_time_step(), scenario_.grid.max_time_step, end - t, target - t});
+    solver_.step(dt);
+    last_dt_ = dt;
+    ++steps_;
+    maxima_.observe(solver_);
+    stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
+    if (const double f = scenario_.control.stop_momentum_fraction; f > 0.0 && !stopped_) {
+      const double momentum = solver_.momentum_sum();
+      maxima_.peak_momentum = std::max(maxima_.peak_momentum, momentum);
+      stopped_ = momentum_stop_ = momentum < f * maxima_.peak_momentum;
     }
-    taken += stepped;
-    segments_.end(stepped);
-    if (reached || stepped == 0) break;
-  }
+    return true;
+  });
 }
 
 void Fv2dSimulation::finish() {

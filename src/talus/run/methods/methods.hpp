@@ -8,5 +8,6 @@ Method dem_method();
 Method mpm_method();
 Method dan_method();
 Method fv2d_method();
+Method two_phase_method();
 
 }  // namespace talus::run

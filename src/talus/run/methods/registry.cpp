@@ -9,10 +9,7 @@ namespace talus::run {
 const std::vector<Method>& methods() {
   // One line per method.
   static const std::vector<Method> all = {
-      dem_method(),
-      mpm_method(),
-      dan_method(),
-      fv2d_method(),
+      dem_method(), mpm_method(), dan_method(), fv2d_method(), two_phase_method(),
   };
   return all;
 }

@@ -12,9 +12,8 @@
 #include <memory>
 
 #include "talus/io/csv_writer.hpp"
-#include "talus/io/frame.hpp"
-#include "talus/io/vtk_writer.hpp"
 #include "talus/runout/grid/fv2d_maxima.hpp"
+#include "talus/runout/grid/grid_maps.hpp"
 #include "talus/runout/scenario.hpp"
 
 namespace talus::runout {
@@ -36,12 +35,7 @@ class Fv2dOutputs final {
   std::filesystem::path dir_;
   const GridSpec& grid_;
   std::unique_ptr<io::CsvSeries> series_;
-  // Snapshots: the GeoTIFFs' index, and the terrain surface (built once) with
-  // two triangles per cell of the domain, `mesh_cell_` the cell of each.
-  std::unique_ptr<io::CsvSeries> snapshot_times_;
-  std::unique_ptr<io::PvdSeries> snapshot_meshes_;
-  io::MeshFrame mesh_;
-  std::vector<std::size_t> mesh_cell_;
+  std::unique_ptr<GridSnapshots> snapshots_;  // when asked for
 };
 
 }  // namespace talus::runout

@@ -59,6 +59,13 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
     throw InputError("two-phase: courant must be in (0, 0.5] (positivity of the MUSCL scheme)");
   if (!(p_.rainfall >= 0.0) || !(p_.infiltration >= 0.0))
     throw InputError("two-phase: rainfall and infiltration rates must be >= 0 (m/s)");
+  for (const auto* map : {&p_.rainfall_map, &p_.infiltration_map}) {
+    if (!map->empty() && map->size() != n)
+      throw InputError(fmt::format("two-phase: a rate map needs {} values", n));
+    for (double r : *map)
+      if (!(r >= 0.0 && std::isfinite(r)))
+        throw InputError("two-phase: rainfall and infiltration rates must be >= 0 (m/s)");
+  }
   if (p_.pressure.mode == EarthPressureMode::Hungr)
     throw InputError("two-phase: the 'hungr' earth-pressure law needs block strains (1D only)");
   TwoPhaseState s;
@@ -114,6 +121,42 @@ void TwoPhaseSolver::set_state(const TwoPhaseState& state) {
                       c % terrain_.shape().nx, c / terrain_.shape().nx));
   }
   s_ = state;
+}
+
+void TwoPhaseSolver::restore(const TwoPhaseState& state, std::vector<double> k,
+                             const TwoPhaseTotals& totals) {
+  if (k.size() != terrain_.shape().cells())
+    throw InputError("two-phase: the earth-pressure coefficients are not this grid's");
+  set_state(state);
+  k_ = std::move(k);
+  outflow_s_ = totals.solid_outflow, outflow_f_ = totals.fluid_outflow;
+  rained_ = totals.rained, infiltrated_ = totals.infiltrated;
+  update_earth_pressure();
+}
+
+double TwoPhaseSolver::normal_height(std::size_t c, Phase phase) const {
+  const double h = phase == Phase::Solid ? s_.hs[c] : s_.hf[c];
+  return h * std::sqrt(terrain_.cos2()[c]);
+}
+
+double TwoPhaseSolver::speed(std::size_t c, Phase phase) const {
+  const bool solid = phase == Phase::Solid;
+  const double h = solid ? s_.hs[c] : s_.hf[c];
+  if (h <= p_.dry_depth) return 0.0;
+  const double u = (solid ? s_.hsu[c] : s_.hfu[c]) / h, v = (solid ? s_.hsv[c] : s_.hfv[c]) / h;
+  // The bed-normal component the terrain's slope adds, as fv2d.
+  const double w = u * terrain_.slope_x()[c] + v * terrain_.slope_y()[c];
+  return std::sqrt(u * u + v * v + w * w);
+}
+
+double TwoPhaseSolver::kinetic_energy() const {
+  double solid = 0.0, fluid = 0.0;
+  for (std::size_t c = 0; c < s_.hs.size(); ++c) {
+    const double vs = speed(c, Phase::Solid), vf = speed(c, Phase::Fluid);
+    solid += s_.hs[c] * vs * vs, fluid += s_.hf[c] * vf * vf;
+  }
+  const auto& d = p_.drag;
+  return 0.5 * (d.solid_density * solid + d.fluid_density * fluid) * terrain_.shape().cell_area();
 }
 
 double TwoPhaseSolver::solid_volume() const {
@@ -590,7 +633,9 @@ void TwoPhaseSolver::step(double dt) {
   s_.time += dt;
   outflow_s_ += 0.5 * (s1 + s2);
   outflow_f_ += 0.5 * (f1 + f2);
-  if (p_.rainfall > 0.0 || p_.infiltration > 0.0) rain_and_infiltrate(dt);
+  if (p_.rainfall > 0.0 || p_.infiltration > 0.0 || !p_.rainfall_map.empty() ||
+      !p_.infiltration_map.empty())
+    rain_and_infiltrate(dt);
 }
 
 void TwoPhaseSolver::rain_and_infiltrate(double dt) {
@@ -602,12 +647,15 @@ void TwoPhaseSolver::rain_and_infiltrate(double dt) {
   double rained = 0.0, infiltrated = 0.0;
   for (std::size_t c = 0; c < s_.hf.size(); ++c) {
     if (!dom[c]) continue;
-    const double wet = s_.hf[c] + dt * p_.rainfall;
-    const double taken = std::min(dt * p_.infiltration, wet);
+    const double rain = dt * (p_.rainfall_map.empty() ? p_.rainfall : p_.rainfall_map[c]);
+    const double sink =
+        dt * (p_.infiltration_map.empty() ? p_.infiltration : p_.infiltration_map[c]);
+    const double wet = s_.hf[c] + rain;
+    const double taken = std::min(sink, wet);
     const double keep = wet > 0.0 ? (wet - taken) / wet : 0.0;
     s_.hf[c] = wet - taken;
     s_.hfu[c] *= keep, s_.hfv[c] *= keep;
-    rained += dt * p_.rainfall, infiltrated += taken;
+    rained += rain, infiltrated += taken;
   }
   const double area = terrain_.shape().cell_area();
   rained_ += rained * area, infiltrated_ += infiltrated * area;

@@ -83,9 +83,11 @@ struct TwoPhaseParams {
   two_phase::DragParams drag;       // densities, gravity, grain size, drag law
   double tan_basal_friction = 0.0;  // tan(delta), the solid's Coulomb friction
   EarthPressure pressure{EarthPressureMode::SavageHutter};
-  double manning = 0.0;          // n, s m^-1/3 (fluid)
-  double rainfall = 0.0;         // R, m/s of fluid depth on every cell of the domain
-  double infiltration = 0.0;     // I, m/s, at most the fluid a cell holds
+  double manning = 0.0;       // n, s m^-1/3 (fluid)
+  double rainfall = 0.0;      // R, m/s of fluid depth on every cell of the domain
+  double infiltration = 0.0;  // I, m/s, at most the fluid a cell holds
+  // Per cell instead of the constants (m/s; empty: the constant everywhere).
+  std::vector<double> rainfall_map, infiltration_map;
   double viscosity_alpha = 0.0;  // Pa s, eta = alpha e^(beta alpha_s)
   double viscosity_beta = 0.0;   // -
   double shear_factor = 3.0;     // chi
@@ -95,6 +97,14 @@ struct TwoPhaseParams {
   double courant = 0.45;
   double dry_depth = 1e-6;  // m: a thinner phase carries no velocity
   GridBoundary boundary = GridBoundary::Wall;
+};
+
+enum class Phase { Solid, Fluid };
+
+// What crossed the model's boundaries so far (m^3): through open edges, from
+// rain, into the ground.
+struct TwoPhaseTotals {
+  double solid_outflow = 0.0, fluid_outflow = 0.0, rained = 0.0, infiltrated = 0.0;
 };
 
 struct TwoPhaseState {
@@ -115,6 +125,12 @@ class TwoPhaseSolver {
 
   const TwoPhaseState& state() const { return s_; }
   void set_state(const TwoPhaseState& state);  // checks sizes, signs, finiteness
+  // Continues from a checkpoint: the state, the solid's earth-pressure
+  // coefficients (kept where it neither spreads nor converges) and the totals.
+  // Throws InputError for sizes that are not this grid's.
+  void restore(const TwoPhaseState& state, std::vector<double> k, const TwoPhaseTotals& totals);
+  const std::vector<double>& earth_pressure() const { return k_; }
+  TwoPhaseTotals totals() const { return {outflow_s_, outflow_f_, rained_, infiltrated_}; }
   const Terrain& terrain() const { return terrain_; }
   const TwoPhaseParams& params() const { return p_; }
 
@@ -127,6 +143,14 @@ class TwoPhaseSolver {
   double momentum_x() const;  // sum (rho_s H_s U_s + rho_f H_f U_f) dA
   double momentum_y() const;
   double max_speed() const;  // of either phase, horizontal
+
+  // Per cell and phase: the bed-normal depth H_p cos(theta) and the
+  // bed-parallel speed (0 where the phase is thinner than dry_depth).
+  double normal_height(std::size_t c, Phase phase) const;
+  double speed(std::size_t c, Phase phase) const;
+  double kinetic_energy() const;  // 1/2 sum rho_p H_p |u_p,bed|^2 dA, J
+  bool at_rest() const { return max_speed() < kRestSpeed; }
+  static constexpr double kRestSpeed = 1e-6;  // m/s, as fv2d
 
  private:
   // The six fields of a cell: each phase's depth and x, y momentum.
