@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Maps of a 2D runout run (model fv2d) over a hillshade of the terrain.
+"""Maps of a 2D runout run (model fv2d or two_phase) over a hillshade of the terrain.
 
 Usage: plot_runout2d.py RUN_DIR   (writes RUN_DIR/plots/*.png and prints their paths)
 Reads the .npy copies of the result rasters (numpy only: Debian's python3 has no
@@ -36,13 +36,25 @@ def main():
     shade = hillshade(z, dx, dy)
     out = os.path.join(run, "plots")
     os.makedirs(out, exist_ok=True)
-    maps = [("max_height", "maximum flow height (m)", "viridis"),
-            ("max_speed", "maximum speed (m/s)", "plasma"),
-            ("max_pressure", "maximum pressure rho v^2 (kPa)", "inferno"),
-            ("deposit", "deposit height (m)", "viridis")]
+    if summary.get("model") == "two_phase":
+        maps = [("max_height", "maximum mixture height (m)", "viridis"),
+                ("max_solid_speed", "maximum solid speed (m/s)", "plasma"),
+                ("max_fluid_speed", "maximum fluid speed (m/s)", "plasma"),
+                ("max_pressure", "maximum impact pressure (kPa)", "inferno"),
+                ("deposit", "deposit height, mixture (m)", "viridis"),
+                ("deposit_solid", "deposit height, solid (m)", "viridis"),
+                ("solid_fraction", "solid fraction of the deposit", "cividis")]
+    else:
+        maps = [("max_height", "maximum flow height (m)", "viridis"),
+                ("max_speed", "maximum speed (m/s)", "plasma"),
+                ("max_pressure", "maximum pressure rho v^2 (kPa)", "inferno"),
+                ("deposit", "deposit height (m)", "viridis")]
     for name, label, cmap in maps:
         a = np.load(os.path.join(run, name + ".npy"))
-        if name == "max_pressure":
+        if name == "solid_fraction":  # NaN where dry: shown where the deposit exceeds 1 cm
+            deposit = np.load(os.path.join(run, "deposit.npy"))
+            a = np.where(deposit > 0.01, np.nan_to_num(a), 0.0)
+        if name.endswith("pressure"):
             a = a / 1000.0
         fig, ax = plt.subplots(figsize=(8, 8 * ny / nx + 1))
         ax.imshow(shade, cmap="gray", extent=extent, origin="upper")
