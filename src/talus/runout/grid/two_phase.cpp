@@ -456,6 +456,14 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   const auto& by = terrain_.slope_y();
   const auto& dom = terrain_.inside();
   const auto& cos2 = terrain_.cos2();
+  const auto& hxx = terrain_.curvature_xx();
+  const auto& hxy = terrain_.curvature_xy();
+  const auto& hyy = terrain_.curvature_yy();
+  // The bed's curvature along a velocity (u, v): u^T Hess(b) u; 0 without
+  // the centripetal term.
+  auto turning = [&](Index c, double u, double v) {
+    return p_.curvature ? u * u * hxx[c] + 2.0 * u * v * hxy[c] + v * v * hyy[c] : 0.0;
+  };
   reconstruct(in);
   face_fluxes(in);
   // The explicit change of a cell's six fields over the stage: what its faces
@@ -490,8 +498,12 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       const double fy = 0.5 * (hy[0] * (1.0 - share_y_[0][c]) + hy[1] * (1.0 - share_y_[1][c]));
       d[kXf] -= rx * grav * fx * dbx, d[kYf] -= ry * grav * fy * dby;
     }
-    d[kXs] -= dt * g_bed_solid_[c] * hs * bx[c];
-    d[kYs] -= dt * g_bed_solid_[c] * hs * by[c];
+    // With fv2d's centripetal part: the bed turns the moving solid along its
+    // curvature (u^T Hess(b) u, at the stage's input velocity, explicit).
+    const double reaction =
+        dt * hs * std::max(0.0, g_bed_solid_[c] + cos2[c] * turning(c, us_[c], vs_[c]));
+    d[kXs] -= reaction * bx[c];
+    d[kYs] -= reaction * by[c];
     // The phases push each other through the fluid's pressure: the fluid
     // by the gradient of the solid's depth (its flux has its own depth
     // only), the solid by buoyancy, gamma g grad(H + b). Centred; a
@@ -575,7 +587,12 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       src.rho_s = rho_s, src.rho_f = rho_f, src.exponent = J;
       if (fluid_wet && hs > dry)
         src.drag = dt * h * two_phase::drag_coefficient(p_.drag, as, 1.0 - as, eta);
-      if (solid_wet) src.friction = dt * p_.tan_basal_friction * (1.0 - gam) * grav * cos2[c] * hs0;
+      // Friction on the solid's buoyant weight and its centripetal load, with
+      // the velocity the stage's explicit terms gave (as fv2d).
+      if (solid_wet)
+        src.friction =
+            dt * p_.tan_basal_friction * hs0 *
+            std::max(0.0, g_bed_solid_[c] + cos2[c] * turning(c, ms[0] / hs, ms[1] / hs));
       if (fluid_wet) {
         src.fluid_linear = rho_f > 0.0 ? dt * p_.shear_factor * eta / (rho_f * hf * h) : 0.0;
         src.fluid_quadratic = dt * grav * p_.manning * p_.manning / (h * std::cbrt(h));

@@ -15,7 +15,10 @@
 //           - g n^2 |U_f| U_f H_f / H^(4/3) - chi eta U_f / (rho_f H) + D / rho_f
 //   solid:  d(H_s U_s)/dt + div(H_s U_s U_s) = -gamma g H_s grad(H + b)
 //           - grad(1/2 k (1 - gamma) g cos^4 H_s H) - (1 - gamma) g cos^2 H_s grad(b)
-//           - tan(delta) (1 - gamma) g cos^2 H_s U_s / |U_s| - D / rho_s
+//           - tan(delta) sigma_s U_s / |U_s| - D / rho_s
+// with sigma_s = H_s cos^2 ((1 - gamma) g + U_s^T Hess(b) U_s) the solid's
+// bed normal stress per unit density (its buoyant weight and, as fv2d's, its
+// centripetal load on a curved bed, which also enters its bed reaction)
 // with gamma = rho_f / rho_s. The fluid pressure is hydrostatic in the
 // vertical over the mixture's depth (seed eqs. 37-38): it pushes the fluid
 // and, as buoyancy, the solid (whose basal normal stress and earth pressure
@@ -93,6 +96,9 @@ struct TwoPhaseParams {
   double shear_factor = 3.0;     // chi
   // Virtual mass (seed eq. 35) on the stage's local forces (see the .cpp).
   bool virtual_mass = true;
+  // The solid's centripetal load on curved beds (fv2d's term): its bed normal
+  // stress is H_s cos^2 ((1 - gamma) g + U_s^T Hess(b) U_s) per unit density.
+  bool curvature = true;
   int order = 2;
   double courant = 0.45;
   double dry_depth = 1e-6;  // m: a thinner phase carries no velocity
