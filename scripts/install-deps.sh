@@ -6,8 +6,8 @@ set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libgdal-dev voro++-dev
       python3 python3-vtk9 python3-matplotlib python3-numpy)
-# The peer benchmark needs LIGGGHTS; only bench/peer.sh asks for it.
-[ "${TALUS_WITH_PEERS:-0}" = 1 ] && pkgs+=(liggghts)
+# The peer benchmarks need LIGGGHTS (bench/peer.sh) and Gerris (bench/gerris_dam_break.py).
+[ "${TALUS_WITH_PEERS:-0}" = 1 ] && pkgs+=(liggghts gerris)
 # The scenario reader's fuzzer needs clang's libFuzzer and OpenMP; only scripts/fuzz.sh asks for it.
 [ "${TALUS_WITH_FUZZ:-0}" = 1 ] && pkgs+=(clang libomp-dev)
 missing=()
