@@ -45,6 +45,16 @@ geometry::FlumeGeometry flume_of(const std::string& method, const std::string& p
                        "[path] of type \"flume\"");
     return geometry::make_flume(sc.path.flume);
   }
+  if (method == "fv2d" || method == "two_phase") {
+    const auto sc = io::parse_runout_scenario(file);
+    const auto model = method == "fv2d" ? runout::RunoutModel::Fv2d : runout::RunoutModel::TwoPhase;
+    if (sc.model != model || !sc.grid.on_path)
+      throw InputError(fmt::format(
+          "{}: the {} scenario of a comparison needs model = \"{}\" on a [path] of type "
+          "\"flume\" (the flume extruded into the grid)",
+          path, method, method));
+    return geometry::make_flume(sc.path.flume);
+  }
   if (method == "mpm") {
     const auto sc = io::parse_mpm_scenario(file);
     if (!sc.flume || sc.flume->release_material_index < 0)
@@ -171,7 +181,9 @@ int compare_command(const CompareOptions& given) {
     run.threads = opt.threads;
     run.quiet = true;
     run_command(run);
-    results.push_back(m == "dan" ? read_dan(out / m) : read_dem(out / m));
+    // The depth-averaged models write the same flume files and figures.
+    const bool depth_averaged = m == "dan" || m == "fv2d" || m == "two_phase";
+    results.push_back(depth_averaged ? read_dan(out / m) : read_dem(out / m));
   }
 
   fs::create_directories(out / "compare");
@@ -189,8 +201,8 @@ int compare_command(const CompareOptions& given) {
   std::string md = fmt::format(
       "# {}: {}\n\nFlume beta = {:.1f} deg, R = {} m; s along the path from the gate foot "
       "(the barrier starts at s = {:.3f} m). Tails: DEM where the deposit is thicker than 3 grain "
-      "diameters, MPM 3 point spacings, DAN at the first block with 10 % of the deepest "
-      "depth.\n\n"
+      "diameters, MPM 3 point spacings, DAN at the first block and fv2d / two_phase at the "
+      "first column with 10 % of the deepest depth.\n\n"
       "| method | arrival at barrier [s] | final front s [m] | run-up along barrier [m] | "
       "run-up elevation [m] | deposit tail s [m] |\n|---|---|---|---|---|---|\n",
       file.name, file.description, rad2deg(g.beta), g.radius, g.arc_end_s());

@@ -115,5 +115,23 @@ TEST(Refusals, TimeStepAboveCriticalNamesFileLineAndKeys) {
   EXPECT_EQ(message.rfind(path + ": --set run.time_step: 0.01 s is above", 0), 0u) << message;
 }
 
+// The grid models on a flume path (runout/grid/path_grid.hpp): the path's grid
+// keys are checked, and what the path's grid does not do is refused.
+TEST(Refusals, GridModelsOnAPath) {
+  const std::string fv2d = "runout_flume_A_fv2d.toml";
+  expect_runout_error(fv2d, "cell_size = 0.005", "cell_size = 0 # <-", "'cell_size'");
+  expect_runout_error(fv2d, "rows = 3", "rows = 0 # <-", "an integer in [1, 1000]");
+  expect_runout_error(fv2d, "[release]\ntype = \"flume\"",
+                      "[release]\ntype = \"flume\"\nblocks = 100 # <-",
+                      "'blocks': is only used by model 'dan'");
+  expect_runout_error(fv2d, "series_interval = 0.01",
+                      "series_interval = 0.01\ncheckpoint_interval = 0.5 # <-",
+                      "does not write checkpoints yet");
+  expect_runout_error("runout_flume_A.toml", "width = 1.0", "width = 1.0\ncell_size = 0.005 # <-",
+                      "'cell_size': is only used by the grid models");
+  expect_runout_error(fv2d, "type = \"flume\"\nbeta = 33", "type = \"profile\" # <-\nbeta = 33",
+                      "takes type 'flume'");
+}
+
 }  // namespace
 }  // namespace talus::io

@@ -17,7 +17,7 @@ DanOutputs::DanOutputs(std::filesystem::path dir, bool resume, double resume_tim
 }
 
 void DanOutputs::on_series(const DanModel& m) {
-  if (!path_written_) write_path(m.path());
+  if (!path_written_) write_path_csv(dir_, m.path()), path_written_ = true;
   const auto& b = m.blocks();
   const Vec2 front = m.path().point(b.s.back());
   double max_depth = 0;
@@ -48,9 +48,9 @@ void DanOutputs::on_snapshot(const DanModel& m) {
   series_->flush();
 }
 
-void DanOutputs::write_path(const RunoutPath& path) {
+void write_path_csv(const std::filesystem::path& dir, const RunoutPath& path) {
   // 5 mm along the path: smooth enough for a plot of the bed, small on disk.
-  auto out = io::CsvSeries::whole(dir_ / "path.csv", {"s", "x", "y", "width"});
+  auto out = io::CsvSeries::whole(dir / "path.csv", {"s", "x", "y", "width"});
   const double s0 = path.s_begin(), s1 = path.s_end();
   const auto n = static_cast<std::size_t>(std::ceil((s1 - s0) / 0.005));
   for (std::size_t k = 0; k <= n; ++k) {
@@ -59,20 +59,23 @@ void DanOutputs::write_path(const RunoutPath& path) {
     out.row({s, p.x(), p.y(), path.width(s)});
   }
   out.close();
-  path_written_ = true;
+}
+
+void write_path_results(const std::filesystem::path& dir, const RunoutResults& r) {
+  auto deposit = io::CsvSeries::whole(dir / "deposit.csv",
+                                      {"s", "x_bed", "y_bed", "depth", "x_surface", "y_surface"});
+  for (const auto& p : r.deposit)
+    deposit.row({p.s, p.x_bed, p.y_bed, p.depth, p.x_surface, p.y_surface});
+  deposit.close();
+  auto front = io::CsvSeries::whole(dir / "front.csv", {"time", "s", "x", "y"});
+  for (const auto& f : r.front) front.row({f.time, f.s, f.x, f.y});
+  front.close();
 }
 
 void DanOutputs::flush() { series_->flush(); }
 
 void DanOutputs::write_results(const RunoutResults& r) const {
-  auto deposit = io::CsvSeries::whole(dir_ / "deposit.csv",
-                                      {"s", "x_bed", "y_bed", "depth", "x_surface", "y_surface"});
-  for (const auto& p : r.deposit)
-    deposit.row({p.s, p.x_bed, p.y_bed, p.depth, p.x_surface, p.y_surface});
-  deposit.close();
-  auto front = io::CsvSeries::whole(dir_ / "front.csv", {"time", "s", "x", "y"});
-  for (const auto& f : r.front) front.row({f.time, f.s, f.x, f.y});
-  front.close();
+  write_path_results(dir_, r);
   series_->flush();
 }
 

@@ -29,11 +29,16 @@ class DanOutputs final {
   void write_results(const RunoutResults& results) const;
 
  private:
-  void write_path(const RunoutPath& path);
   bool path_written_ = false;
   std::filesystem::path dir_;
   std::unique_ptr<io::CsvSeries> series_;
   std::unique_ptr<io::PvdSeries> blocks_;
 };
+
+// The path's files, shared with the grid models on a path (grid/path_grid.hpp):
+// path.csv (the bed every 5 mm), and deposit.csv and front.csv from finished
+// results.
+void write_path_csv(const std::filesystem::path& dir, const RunoutPath& path);
+void write_path_results(const std::filesystem::path& dir, const RunoutResults& results);
 
 }  // namespace talus::runout

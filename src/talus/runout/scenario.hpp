@@ -66,6 +66,16 @@ struct GridSpec {
   std::string release_resampling;
   int order = 2;
   GridBoundary boundary = GridBoundary::Wall;
+  // Instead of rasters, the grid can be a flume path (PathSpec) extruded
+  // across its width (grid/path_grid.hpp): `rows` rows of cells `cell_size`
+  // long along x, walls on every side. The run then also reports the 1D
+  // flume results (front along the path, run-up, deposit, as DAN), the front
+  // being the last column deeper than front_depth (bed-normal).
+  bool on_path = false;
+  double cell_size = 0.0;  // m along x
+  std::size_t rows = 3;
+  double front_depth = 1e-3;   // m
+  double x_begin = 0.0;        // x of the grid's west edge in the path's plane
   double dry_depth = 1e-6;     // m
   double max_time_step = 0.1;  // s
 };

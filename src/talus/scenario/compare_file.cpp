@@ -33,7 +33,8 @@ CompareFile read_compare_file(const std::string& path) {
   }
   methods.finish();
   if (c.methods.empty())
-    methods.fail("methods", "expected at least one of dem = \"...\", dan = \"...\", mpm = \"...\"");
+    methods.fail("methods",
+                 "expected at least one of dem, dan, fv2d, two_phase, mpm = \"scenario.toml\"");
   root.finish();
   return c;
 }

@@ -22,6 +22,6 @@ struct CompareFile {
 CompareFile read_compare_file(const std::string& path);
 
 // The method names a comparison knows, in report order.
-inline constexpr const char* kCompareMethods[] = {"dem", "dan", "mpm"};
+inline constexpr const char* kCompareMethods[] = {"dem", "dan", "fv2d", "two_phase", "mpm"};
 
 }  // namespace talus::io

@@ -14,6 +14,7 @@
 #include "talus/core/error.hpp"
 #include "talus/io/raster.hpp"
 #include "talus/io/raster_resample.hpp"
+#include "talus/runout/grid/path_grid.hpp"
 #include "talus/scenario/declared_keys.hpp"
 #include "talus/scenario/scenario_detail.hpp"
 #include "talus/scenario/scenario_grid_rasters.hpp"
@@ -87,8 +88,23 @@ void read_run(TomlReader& r, runout::RunoutScenario& s) {
   r.finish();
 }
 
-void read_path(TomlReader& r, const detail::DemContext& ctx, runout::PathSpec& p) {
+// grid: the scenario's grid when a grid model runs on the path (its cells).
+void read_path(TomlReader& r, const detail::DemContext& ctx, runout::PathSpec& p,
+               runout::GridSpec* grid = nullptr) {
   p.kind = r.required_enum("type", kPathKinds);
+  if (grid) {
+    if (p.kind != PathKind::Flume)
+      r.fail("type", "a grid model (fv2d, two_phase) on a path takes type 'flume'");
+    grid->on_path = true;
+    grid->cell_size = required_number_in(r, "cell_size", positive());
+    const auto rows = r.integer("rows", static_cast<std::int64_t>(grid->rows));
+    r.expect(rows >= 1 && rows <= 1000, "rows", "an integer in [1, 1000]");
+    grid->rows = static_cast<std::size_t>(rows);
+    grid->front_depth = number_in(r, "front_depth", grid->front_depth, positive());
+  } else {
+    r.reject({"cell_size", "rows", "front_depth"},
+             "is only used by the grid models 'fv2d' and 'two_phase' on a path");
+  }
   p.spacing = number_in(r, "spacing", p.spacing, positive());
   if (p.kind == PathKind::Flume) {
     r.reject({"file", "smoothing_length", "barrier_start"},
@@ -165,11 +181,18 @@ void read_smoothing(TomlReader& r, runout::SmoothingParams& s) {
   r.finish();
 }
 
-void read_release(TomlReader& r, const runout::PathSpec& path, runout::ReleaseSpec& rel) {
+void read_release(TomlReader& r, const detail::DemContext& ctx, runout::RunoutScenario& s) {
+  const runout::PathSpec& path = s.path;
+  runout::ReleaseSpec& rel = s.release;
   rel.kind = r.required_enum("type", kReleaseKinds);
-  const auto blocks = r.integer("blocks", static_cast<std::int64_t>(rel.blocks));
-  r.expect(blocks >= 2 && blocks <= 1000000, "blocks", "an integer in [2, 1000000]");
-  rel.blocks = static_cast<std::size_t>(blocks);
+  if (s.grid.on_path) {
+    r.reject({"blocks"}, "is only used by model 'dan' (the grid's cells carry the release)");
+    if (s.model == RunoutModel::TwoPhase) two_phase_keys::read_release_fractions(r, ctx, s);
+  } else {
+    const auto blocks = r.integer("blocks", static_cast<std::int64_t>(rel.blocks));
+    r.expect(blocks >= 2 && blocks <= 1000000, "blocks", "an integer in [2, 1000000]");
+    rel.blocks = static_cast<std::size_t>(blocks);
+  }
   if (rel.kind == ReleaseKind::Flume) {
     r.reject({"polygon"}, "is not used by a release of type 'flume'");
     if (path.kind != PathKind::Flume)
@@ -214,7 +237,15 @@ void read_output(TomlReader& r, runout::RunoutScenario& s) {
   if (on_grid(s.model)) {
     // Snapshot maps are large: none unless asked for.
     s.control.snapshot_interval = number_in(r, "snapshot_interval", 0.0, non_negative());
-    r.reject({"tail_fraction"}, "is not used by the grid models 'fv2d' and 'two_phase'");
+    if (s.grid.on_path) {
+      if (s.control.checkpoint_interval > 0.0)
+        r.fail("checkpoint_interval",
+               "a grid model on a path does not write checkpoints yet; expected 0 (none)");
+      s.tail_fraction =
+          number_in(r, "tail_fraction", s.tail_fraction, between(0.0, 1.0, true, true));
+    } else {
+      r.reject({"tail_fraction"}, "is only used on a path (the deposit's tail along it)");
+    }
     r.finish();
     return;
   }
@@ -307,7 +338,12 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
   read_run(run, s);
   const bool grid = on_grid(s.model), two_phase = s.model == RunoutModel::TwoPhase;
   const std::string model = detail::name_of(kModels, s.model);
-  if (grid) {
+  if (grid && root.has("path") && !root.has("terrain")) {
+    // A flume path extruded into the grid (grid/path_grid.hpp).
+    root.reject({"smoothing"}, fmt::format("is not used by model '{}'", model));
+    TomlReader path = root.required_table("path");
+    read_path(path, ctx, s.path, &s.grid);
+  } else if (grid) {
     root.reject({"path", "smoothing"},
                 fmt::format("is not used by model '{}' (the terrain is [terrain])", model));
     TomlReader terrain = root.required_table("terrain");
@@ -338,12 +374,19 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
     read_smoothing(smoothing, s.params.smoothing);
   }
   TomlReader release = root.required_table("release");
-  if (grid)
+  if (grid && !s.grid.on_path)
     read_grid_release(release, ctx, s);
   else
-    read_release(release, s.path, s.release);
+    read_release(release, ctx, s);
   TomlReader output = table_or_empty(root, "output", empty);
   read_output(output, s);
+  if (s.grid.on_path) {
+    try {
+      runout::grid_from_path(s);
+    } catch (const InputError& e) {
+      root.fail("path", e.what());
+    }
+  }
   root.finish();
   return s;
 }
@@ -389,23 +432,39 @@ nlohmann::ordered_json runout_scenario_to_json(const runout::RunoutScenario& s) 
   if (grid) {
     if (p.pressure.mode != EarthPressureMode::Constant)
       pressure = {{"model", detail::name_of(kPressureModes, p.pressure.mode)}};
-    Json terrain = {{"file", s.grid.terrain_file}};
-    if (!s.grid.obstacles_file.empty()) terrain["obstacles"] = s.grid.obstacles_file;
-    terrain["boundary"] = detail::name_of(kBoundaries, s.grid.boundary);
-    terrain["order"] = s.grid.order;
-    terrain["dry_depth"] = s.grid.dry_depth;
-    Json root = {{"method", "runout"},
-                 {"name", s.name},
-                 {"description", s.description},
-                 {"run", run},
-                 {"terrain", terrain}};
+    Json root = {
+        {"method", "runout"}, {"name", s.name}, {"description", s.description}, {"run", run}};
+    if (s.grid.on_path) {
+      path["cell_size"] = s.grid.cell_size;
+      path["rows"] = s.grid.rows;
+      path["front_depth"] = s.grid.front_depth;
+      root["path"] = path;
+    } else {
+      Json terrain = {{"file", s.grid.terrain_file}};
+      if (!s.grid.obstacles_file.empty()) terrain["obstacles"] = s.grid.obstacles_file;
+      terrain["boundary"] = detail::name_of(kBoundaries, s.grid.boundary);
+      terrain["order"] = s.grid.order;
+      terrain["dry_depth"] = s.grid.dry_depth;
+      root["terrain"] = terrain;
+    }
     if (!two_phase) root["material"] = material;
     root["earth_pressure"] = pressure;
-    root["release"] = {{"type", "raster"}, {"file", s.grid.release_file}};
+    if (s.grid.on_path) {
+      Json release = {{"type", detail::name_of(kReleaseKinds, s.release.kind)}};
+      if (s.release.kind == ReleaseKind::Polygon) {
+        Json poly = Json::array();
+        for (const auto& v : s.release.polygon) poly.push_back({v.x(), v.y()});
+        release["polygon"] = poly;
+      }
+      root["release"] = release;
+    } else {
+      root["release"] = {{"type", "raster"}, {"file", s.grid.release_file}};
+    }
     if (two_phase) two_phase_keys::write(root, s);
     root["output"] = {{"series_interval", s.control.series_interval},
                       {"snapshot_interval", s.control.snapshot_interval},
                       {"checkpoint_interval", s.control.checkpoint_interval}};
+    if (s.grid.on_path) root["output"]["tail_fraction"] = s.tail_fraction;
     return root;
   }
   Json smoothing = {{"enabled", p.smoothing.enabled},

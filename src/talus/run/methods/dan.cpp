@@ -110,12 +110,6 @@ MethodReport DanSimulation::report() const {
   using nlohmann::json;
   const auto& model = setup_.model;
   const auto& r = tracker_.results();
-  auto runup = [](const runout::RunUp& u) {
-    return json{{"elevation_m", u.elevation},
-                {"s_m", u.s},
-                {"distance_on_barrier_m", u.distance_on_barrier},
-                {"time_s", u.time}};
-  };
   MethodReport rep;
   rep.method = "runout";
   rep.model = "dan";
@@ -135,8 +129,8 @@ MethodReport DanSimulation::report() const {
                  {"tail_s_absolute_m", r.tail_s_absolute},
                  {"barrier_arrival_time_s", r.barrier_arrival_time},
                  {"rest_time_s", r.rest_time},
-                 {"runup_max", runup(r.runup_max)},
-                 {"runup_final", runup(r.runup_final)},
+                 {"runup_max", runup_json(r.runup_max)},
+                 {"runup_final", runup_json(r.runup_final)},
                  {"max_speed_m_s", r.max_speed},
                  {"max_depth_m", r.max_depth},
                  {"kinetic_energy_J", model.kinetic_energy()}};

@@ -16,6 +16,7 @@ namespace talus::run {
 Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
     : scenario_(std::move(scenario)),
       solver_(runout::build_fv2d(scenario_)),
+      path_(scenario_),
       outputs_(std::make_unique<Observer>()),
       threads_(threads),
       segments_(threads) {}
@@ -67,6 +68,7 @@ void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_s
     last_dt_ = dt;
     ++steps_;
     maxima_.observe(solver_);
+    if (path_.active()) path_.observe_step(time(), normal_heights(), solver_.max_speed());
     stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
     if (const double f = scenario_.control.stop_momentum_fraction; f > 0.0 && !stopped_) {
       const double momentum = solver_.momentum_sum();
@@ -77,8 +79,21 @@ void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_s
   });
 }
 
+std::vector<double> Fv2dSimulation::normal_heights() const {
+  std::vector<double> h(solver_.state().h.size());
+  for (std::size_t c = 0; c < h.size(); ++c) h[c] = solver_.normal_height(c);
+  return h;
+}
+
+void Fv2dSimulation::after_series() {
+  if (path_.active()) path_.sample_front(time(), normal_heights());
+}
+
 void Fv2dSimulation::finish() {
   if (files_) files_->write_results(solver_, maxima_);
+  if (path_.active())
+    path_.finish(checkpoint_.empty() ? std::filesystem::path() : checkpoint_.parent_path(), time(),
+                 normal_heights(), solver_.at_rest());
 }
 
 double Fv2dSimulation::estimated_steps() const {
@@ -128,6 +143,7 @@ MethodReport Fv2dSimulation::report() const {
   // The stop rule's reference, tracked only when the rule is on.
   if (scenario_.control.stop_momentum_fraction > 0.0)
     r.metrics["peak_momentum_kg_m_s"] = maxima_.peak_momentum;
+  path_.add_metrics(r.metrics);
   // "fv2d: 1200 m^3 released, 35000 m^2 affected, 21000 m^2 deposit; max height
   // 3.1 m, max speed 12 m/s, max pressure 140 kPa; at rest".
   const std::string end =

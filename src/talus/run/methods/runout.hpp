@@ -6,18 +6,39 @@
 // output.checkpoint_interval (runout/checkpoint.hpp).
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
+#include <vector>
 
 #include "talus/core/team_segments.hpp"
 #include "talus/run/simulation.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/grid/fv2d_maxima.hpp"
 #include "talus/runout/grid/fv2d_output.hpp"
+#include "talus/runout/grid/path_grid.hpp"
 #include "talus/runout/output_observer.hpp"
 #include "talus/runout/results.hpp"
 #include "talus/runout/scenario.hpp"
 
 namespace talus::run {
+
+// The flume results of a grid model on a path (grid/path_grid.hpp): nothing
+// unless scenario.grid.on_path. The methods feed it the bed-normal depth per
+// cell; at the end it writes path.csv, front.csv and deposit.csv and adds
+// DAN's flume figures to summary.json's metrics (what `talus compare` reads).
+class GridPathResults {
+ public:
+  explicit GridPathResults(const runout::RunoutScenario& scenario);
+  bool active() const { return tracker_.has_value(); }
+  void observe_step(double time, const std::vector<double>& depth, double max_speed);
+  void sample_front(double time, const std::vector<double>& depth);
+  void finish(const std::filesystem::path& out, double time, const std::vector<double>& depth,
+              bool at_rest);
+  void add_metrics(nlohmann::json& metrics) const;
+
+ private:
+  std::optional<runout::PathGridTracker> tracker_;
+};
 
 class DanSimulation : public Simulation {
  public:
@@ -76,6 +97,7 @@ class Fv2dSimulation : public Simulation {
   void advance(double target, double tolerance, std::int64_t max_steps) override;
   bool stopped() const override { return stopped_; }
   Observer& outputs() override { return *outputs_; }
+  void after_series() override;
   void finish() override;
   MethodReport report() const override;
 
@@ -83,9 +105,11 @@ class Fv2dSimulation : public Simulation {
   const runout::Fv2dMaxima& maxima() const { return maxima_; }
 
  private:
+  std::vector<double> normal_heights() const;
   runout::RunoutScenario scenario_;
   runout::Fv2dSolver solver_;
   runout::Fv2dMaxima maxima_;
+  GridPathResults path_;
   std::unique_ptr<runout::Fv2dOutputs> files_;
   std::unique_ptr<Observer> outputs_;
   std::filesystem::path checkpoint_;  // empty: no files
@@ -97,6 +121,9 @@ class Fv2dSimulation : public Simulation {
   bool stopped_ = false;
   bool momentum_stop_ = false;  // stopped by run.stop_momentum_fraction
 };
+
+// A RunUp as summary.json writes it.
+nlohmann::json runup_json(const runout::RunUp& runup);
 
 // The warning of a runout run that ends before its mass has come to rest: its
 // deposit and run-out are not final.

@@ -4,6 +4,7 @@
 
 #include "talus/io/archive.hpp"
 #include "talus/run/methods/runout.hpp"
+#include "talus/runout/output_observer.hpp"
 #include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::run {
@@ -20,6 +21,47 @@ runout::RunoutScenario write_resolved_runout(const runout::RunoutScenario& scena
   const auto path = out / "scenario.toml";
   io::write_file_atomically(path, io::runout_scenario_to_toml(scenario));
   return io::parse_runout_scenario(io::load_scenario_file(path.string(), {}));
+}
+
+nlohmann::json runup_json(const runout::RunUp& u) {
+  return {{"elevation_m", u.elevation},
+          {"s_m", u.s},
+          {"distance_on_barrier_m", u.distance_on_barrier},
+          {"time_s", u.time}};
+}
+
+GridPathResults::GridPathResults(const runout::RunoutScenario& sc) {
+  if (sc.grid.on_path) tracker_.emplace(sc);
+}
+
+void GridPathResults::observe_step(double time, const std::vector<double>& depth,
+                                   double max_speed) {
+  if (tracker_) tracker_->observe_step(time, depth, max_speed);
+}
+
+void GridPathResults::sample_front(double time, const std::vector<double>& depth) {
+  if (tracker_) tracker_->sample_front(time, depth);
+}
+
+void GridPathResults::finish(const std::filesystem::path& out, double time,
+                             const std::vector<double>& depth, bool at_rest) {
+  if (!tracker_) return;
+  tracker_->finish(time, depth, at_rest);
+  if (out.empty()) return;
+  runout::write_path_csv(out, tracker_->path());
+  runout::write_path_results(out, tracker_->results());
+}
+
+void GridPathResults::add_metrics(nlohmann::json& m) const {
+  if (!tracker_) return;
+  const auto& r = tracker_->results();
+  m["front_s_m"] = tracker_->final_front_s();
+  m["tail_s_m"] = r.tail_s;
+  m["tail_s_absolute_m"] = r.tail_s_absolute;
+  m["barrier_arrival_time_s"] = r.barrier_arrival_time;
+  m["rest_time_s"] = r.rest_time;
+  m["runup_max"] = runup_json(r.runup_max);
+  m["runup_final"] = runup_json(r.runup_final);
 }
 
 }  // namespace talus::run

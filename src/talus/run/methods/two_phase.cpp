@@ -8,7 +8,6 @@
 
 #include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
-#include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/two_phase_builder.hpp"
 #include "talus/scenario/scenario_runout.hpp"
 
@@ -17,6 +16,7 @@ namespace talus::run {
 TwoPhaseSimulation::TwoPhaseSimulation(runout::RunoutScenario scenario, int threads)
     : scenario_(std::move(scenario)),
       solver_(runout::build_two_phase(scenario_)),
+      path_(scenario_),
       outputs_(std::make_unique<Observer>()),
       threads_(threads),
       segments_(threads) {}
@@ -64,6 +64,7 @@ void TwoPhaseSimulation::advance(double target, double tolerance, std::int64_t m
     last_dt_ = dt;
     ++steps_;
     maxima_.observe(solver_);
+    if (path_.active()) path_.observe_step(time(), normal_heights(), solver_.max_speed());
     // Rain keeps adding water: such a run is never at rest.
     const auto& p = solver_.params();
     const bool raining = p.rainfall > 0.0 || !p.rainfall_map.empty();
@@ -72,8 +73,23 @@ void TwoPhaseSimulation::advance(double target, double tolerance, std::int64_t m
   });
 }
 
+std::vector<double> TwoPhaseSimulation::normal_heights() const {
+  std::vector<double> h(solver_.state().hs.size());
+  for (std::size_t c = 0; c < h.size(); ++c)
+    h[c] = solver_.normal_height(c, runout::Phase::Solid) +
+           solver_.normal_height(c, runout::Phase::Fluid);
+  return h;
+}
+
+void TwoPhaseSimulation::after_series() {
+  if (path_.active()) path_.sample_front(time(), normal_heights());
+}
+
 void TwoPhaseSimulation::finish() {
   if (files_) files_->write_results(solver_, maxima_);
+  if (path_.active())
+    path_.finish(checkpoint_.empty() ? std::filesystem::path() : checkpoint_.parent_path(), time(),
+                 normal_heights(), solver_.at_rest());
 }
 
 double TwoPhaseSimulation::estimated_steps() const {
@@ -139,6 +155,7 @@ MethodReport TwoPhaseSimulation::report() const {
                {"deposit_area_m2", deposit_area},
                {"at_rest", solver_.at_rest()},
                {"kinetic_energy_J", solver_.kinetic_energy()}};
+  path_.add_metrics(r.metrics);
   const double v0 = vs0 + vf0;
   r.headline = fmt::format(
       "two_phase: {:.4g} m^3 released ({:.0f} % solid), {:.4g} m^2 affected, {:.4g} m^2 deposit "

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "talus/core/team_segments.hpp"
+#include "talus/run/methods/runout.hpp"
 #include "talus/run/simulation.hpp"
 #include "talus/runout/checkpoint.hpp"
 #include "talus/runout/grid/two_phase_output.hpp"
@@ -33,6 +34,7 @@ class TwoPhaseSimulation : public Simulation {
   void advance(double target, double tolerance, std::int64_t max_steps) override;
   bool stopped() const override { return stopped_; }
   Observer& outputs() override { return *outputs_; }
+  void after_series() override;
   void finish() override;
   MethodReport report() const override;
 
@@ -40,9 +42,11 @@ class TwoPhaseSimulation : public Simulation {
   const runout::TwoPhaseMaxima& maxima() const { return maxima_; }
 
  private:
+  std::vector<double> normal_heights() const;  // of the mixture
   runout::RunoutScenario scenario_;
   runout::TwoPhaseSolver solver_;
   runout::TwoPhaseMaxima maxima_;
+  GridPathResults path_;
   std::unique_ptr<runout::TwoPhaseOutputs> files_;
   std::unique_ptr<Observer> outputs_;
   std::filesystem::path checkpoint_;  // empty: no files
