@@ -66,6 +66,12 @@ for field in height solid_fraction solid_speed fluid_speed; do
 done
 same_metrics two_phase
 
+# A grid model on a flume path: the flume results gathered before the
+# checkpoint (arrival at the barrier at 0.48 s) come through it.
+killed_and_resumed two_phase_flume "$src/tests/data/scenarios/two_phase_flume_resume.toml"
+for f in series.csv front.csv deposit.csv path.csv deposit.npy; do same two_phase_flume $f; done
+same_metrics two_phase_flume
+
 # A runout folder without a checkpoint: the usual refusal, naming the key.
 mkdir -p "$tmp/none" && cp "$tmp/dan-full/scenario.toml" "$tmp/none/"
 "$talus" run --resume "$tmp/none" >"$tmp/out" 2>&1; rc=$?

@@ -124,9 +124,6 @@ TEST(Refusals, GridModelsOnAPath) {
   expect_runout_error(fv2d, "[release]\ntype = \"flume\"",
                       "[release]\ntype = \"flume\"\nblocks = 100 # <-",
                       "'blocks': is only used by model 'dan'");
-  expect_runout_error(fv2d, "series_interval = 0.01",
-                      "series_interval = 0.01\ncheckpoint_interval = 0.5 # <-",
-                      "does not write checkpoints yet");
   expect_runout_error("runout_flume_A.toml", "width = 1.0", "width = 1.0\ncell_size = 0.005 # <-",
                       "'cell_size': is only used by the grid models");
   expect_runout_error(fv2d, "type = \"flume\"\nbeta = 33", "type = \"profile\" # <-\nbeta = 33",

@@ -32,10 +32,12 @@ void save_checkpoint(const DanModel& model, const RunoutTracker& tracker, StepCo
 StepCount load_checkpoint(DanModel& model, RunoutTracker& tracker,
                           const std::filesystem::path& path);
 
+// path_results: a grid model's flume results on a path (empty otherwise).
 void save_checkpoint(const Fv2dSolver& solver, const Fv2dMaxima& maxima, double released_volume,
-                     StepCount count, const std::filesystem::path& path);
+                     const RunoutResults& path_results, StepCount count,
+                     const std::filesystem::path& path);
 StepCount load_checkpoint(Fv2dSolver& solver, Fv2dMaxima& maxima, double& released_volume,
-                          const std::filesystem::path& path);
+                          RunoutResults& path_results, const std::filesystem::path& path);
 
 // Released volumes of each phase, for the figures of a resumed run.
 struct ReleasedVolumes {
@@ -43,8 +45,9 @@ struct ReleasedVolumes {
 };
 
 void save_checkpoint(const TwoPhaseSolver& solver, const TwoPhaseMaxima& maxima,
-                     ReleasedVolumes released, StepCount count, const std::filesystem::path& path);
+                     ReleasedVolumes released, const RunoutResults& path_results, StepCount count,
+                     const std::filesystem::path& path);
 StepCount load_checkpoint(TwoPhaseSolver& solver, TwoPhaseMaxima& maxima, ReleasedVolumes& released,
-                          const std::filesystem::path& path);
+                          RunoutResults& path_results, const std::filesystem::path& path);
 
 }  // namespace talus::runout

@@ -238,9 +238,6 @@ void read_output(TomlReader& r, runout::RunoutScenario& s) {
     // Snapshot maps are large: none unless asked for.
     s.control.snapshot_interval = number_in(r, "snapshot_interval", 0.0, non_negative());
     if (s.grid.on_path) {
-      if (s.control.checkpoint_interval > 0.0)
-        r.fail("checkpoint_interval",
-               "a grid model on a path does not write checkpoints yet; expected 0 (none)");
       s.tail_fraction =
           number_in(r, "tail_fraction", s.tail_fraction, between(0.0, 1.0, true, true));
     } else {

@@ -24,14 +24,18 @@ Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
 void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
   checkpoint_ = out / "checkpoint.bin";
   if (resume) {
-    const auto count = runout::load_checkpoint(solver_, maxima_, initial_volume_, checkpoint_);
+    runout::RunoutResults path;
+    const auto count =
+        runout::load_checkpoint(solver_, maxima_, initial_volume_, path, checkpoint_);
+    path_.restore(std::move(path));
     steps_ = count.steps, last_dt_ = count.last_time_step;
   }
   files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid, resume, time(),
                                                  scenario_.control.snapshot_interval > 0.0);
   outputs_ = std::make_unique<FilesWithCheckpoint<runout::Fv2dOutputs, runout::Fv2dSolver>>(
       *files_, solver_, [this] {
-        runout::save_checkpoint(solver_, maxima_, initial_volume_, {steps_, last_dt_}, checkpoint_);
+        runout::save_checkpoint(solver_, maxima_, initial_volume_, path_.results(),
+                                {steps_, last_dt_}, checkpoint_);
       });
 }
 

@@ -35,6 +35,9 @@ class GridPathResults {
   void finish(const std::filesystem::path& out, double time, const std::vector<double>& depth,
               bool at_rest);
   void add_metrics(nlohmann::json& metrics) const;
+  // For checkpoints: what was gathered so far (empty when not active).
+  runout::RunoutResults results() const;
+  void restore(runout::RunoutResults results);
 
  private:
   std::optional<runout::PathGridTracker> tracker_;

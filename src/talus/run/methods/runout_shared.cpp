@@ -52,6 +52,14 @@ void GridPathResults::finish(const std::filesystem::path& out, double time,
   runout::write_path_results(out, tracker_->results());
 }
 
+runout::RunoutResults GridPathResults::results() const {
+  return tracker_ ? tracker_->results() : runout::RunoutResults{};
+}
+
+void GridPathResults::restore(runout::RunoutResults results) {
+  if (tracker_) tracker_->restore(std::move(results));
+}
+
 void GridPathResults::add_metrics(nlohmann::json& m) const {
   if (!tracker_) return;
   const auto& r = tracker_->results();

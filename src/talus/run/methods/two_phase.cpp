@@ -24,14 +24,17 @@ TwoPhaseSimulation::TwoPhaseSimulation(runout::RunoutScenario scenario, int thre
 void TwoPhaseSimulation::write_to(const std::filesystem::path& out, bool resume) {
   checkpoint_ = out / "checkpoint.bin";
   if (resume) {
-    const auto count = runout::load_checkpoint(solver_, maxima_, released_, checkpoint_);
+    runout::RunoutResults path;
+    const auto count = runout::load_checkpoint(solver_, maxima_, released_, path, checkpoint_);
+    path_.restore(std::move(path));
     steps_ = count.steps, last_dt_ = count.last_time_step;
   }
   files_ = std::make_unique<runout::TwoPhaseOutputs>(out, scenario_.grid, resume, time(),
                                                      scenario_.control.snapshot_interval > 0.0);
   outputs_ = std::make_unique<FilesWithCheckpoint<runout::TwoPhaseOutputs, runout::TwoPhaseSolver>>(
       *files_, solver_, [this] {
-        runout::save_checkpoint(solver_, maxima_, released_, {steps_, last_dt_}, checkpoint_);
+        runout::save_checkpoint(solver_, maxima_, released_, path_.results(), {steps_, last_dt_},
+                                checkpoint_);
       });
 }
 

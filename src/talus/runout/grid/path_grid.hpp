@@ -34,6 +34,8 @@ class PathGridTracker {
   const RunoutResults& results() const { return r_; }
   const RunoutPath& path() const { return path_; }
   double final_front_s() const { return final_front_; }  // set by finish
+  // Continues from a checkpoint: what the interrupted run had gathered.
+  void restore(RunoutResults results) { r_ = std::move(results); }
 
  private:
   double front_s(const std::vector<double>& depth) const;
