@@ -52,6 +52,7 @@ void read_fluid(TomlReader& r, runout::TwoPhaseParams& p) {
   p.viscosity_alpha = number_in(r, "viscosity_alpha", 1e-3, positive());
   p.viscosity_beta = number_in(r, "viscosity_beta", 0.0, between(0.0, 100.0, false, false));
   p.shear_factor = number_in(r, "shear_factor", p.shear_factor, positive());  // chi
+  p.lateral_viscosity = r.boolean("lateral_viscosity", p.lateral_viscosity);
   r.finish();
 }
 
@@ -143,11 +144,10 @@ void write(nlohmann::ordered_json& root, const runout::RunoutScenario& s) {
                    {"internal_friction", deg(p.pressure.phi_internal)},
                    {"basal_friction", deg(std::atan(p.tan_basal_friction))},
                    {"grain_diameter", p.drag.grain_diameter}};
-  root["fluid"] = {{"density", p.drag.fluid_density},
-                   {"manning", p.manning},
-                   {"viscosity_alpha", p.viscosity_alpha},
-                   {"viscosity_beta", p.viscosity_beta},
-                   {"shear_factor", p.shear_factor}};
+  root["fluid"] = {
+      {"density", p.drag.fluid_density},      {"manning", p.manning},
+      {"viscosity_alpha", p.viscosity_alpha}, {"viscosity_beta", p.viscosity_beta},
+      {"shear_factor", p.shear_factor},       {"lateral_viscosity", p.lateral_viscosity}};
   root["drag"] = {{"exponent", p.drag.exponent},
                   {"mixing_exponent", p.drag.mixing_exponent},
                   {"smoothing_speed", p.drag.smoothing_speed},

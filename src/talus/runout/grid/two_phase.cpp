@@ -85,6 +85,7 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
   for (int m = 0; m < kFields; ++m) fx_[m].assign(nfx, 0.0), fy_[m].assign(nfy, 0.0);
   cxl_.assign(nfx, 0.0), cxr_.assign(nfx, 0.0), cyl_.assign(nfy, 0.0), cyr_.assign(nfy, 0.0);
   held_.assign(n, 0);
+  nu_.assign(n, 0.0);
   supply_[0].assign(n, 1.0), supply_[1].assign(n, 1.0);
   domain_ = find_domain_edges(terrain_);
   for (int k = 0; k < 2; ++k)
@@ -217,7 +218,33 @@ double TwoPhaseSolver::stable_time_step() const {
   if (!wet) return kInf;
   // As fv2d: still material set moving by gravity crosses at most `courant` of a cell.
   const double from_rest = std::sqrt(p_.courant * std::min(g.dx, g.dy) / grav);
-  return rate > 0.0 ? std::min(p_.courant / rate, from_rest) : from_rest;
+  double dt = rate > 0.0 ? std::min(p_.courant / rate, from_rest) : from_rest;
+  if (lateral_viscosity()) {  // the explicit lateral stress (two_phase_viscous.hpp)
+    double nu_max = 0.0;
+    for (Index c = 0; c < n; ++c)
+      if (s_.hf[c] > dry) {
+        const double h = s_.hs[c] + s_.hf[c];
+        nu_max = std::max(nu_max, two_phase::julien_obrien_viscosity(
+                                      p_.viscosity_alpha, p_.viscosity_beta, s_.hs[c] / h));
+      }
+    nu_max /= p_.drag.fluid_density;
+    const double viscous = nu_max * (4.0 / (g.dx * g.dx) + 4.0 / (g.dy * g.dy));
+    if (viscous > 0.0) dt = std::min(dt, p_.courant / viscous);
+  }
+  return dt;
+}
+
+void TwoPhaseSolver::update_viscosity(const TwoPhaseState& in) {
+  const Index n = static_cast<Index>(in.hf.size());
+  const double dry = p_.dry_depth, rho_f = p_.drag.fluid_density;
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < n; ++c) {
+    const double hf = in.hf[c], h = in.hs[c] + hf;
+    nu_[c] = hf > dry ? two_phase::julien_obrien_viscosity(p_.viscosity_alpha, p_.viscosity_beta,
+                                                           in.hs[c] / h) /
+                            rho_f
+                      : 0.0;
+  }
 }
 
 void TwoPhaseSolver::update_earth_pressure() {
@@ -466,6 +493,11 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
   };
   reconstruct(in);
   face_fluxes(in);
+  if (lateral_viscosity()) {
+    update_viscosity(in);
+    two_phase_detail::viscous_fluxes(terrain_, in.hf, uf_, vf_, nu_, dry,
+                                     p_.boundary == GridBoundary::Open, viscous_);
+  }
   // The explicit change of a cell's six fields over the stage: what its faces
   // carry (fluxes, the solid's only through faces `open`: west, east, south,
   // north; the fluid's hydrostatic corrections), then the local terms (the
@@ -482,6 +514,11 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     }
     d[kXf] -= rx * (cxl_[e] - cxr_[w]);
     d[kYf] -= ry * (cyl_[n] - cyr_[s]);
+    if (lateral_viscosity()) {
+      const auto& v = viscous_;
+      d[kXf] += rx * (v.x[0][e] - v.x[0][w]) + ry * (v.y[0][n] - v.y[0][s]);
+      d[kYf] += rx * (v.x[1][e] - v.x[1][w]) + ry * (v.y[1][n] - v.y[1][s]);
+    }
     if (carried) std::copy(d, d + kFields, carried);
     const double hs = in.hs[c], hf = in.hf[c];
     // The fluid's bed: -g (H_f,w + H_f,e) / 2 (b_e - b_w) / dx with the

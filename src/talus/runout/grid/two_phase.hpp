@@ -78,6 +78,7 @@
 #include "talus/runout/grid/domain_edges.hpp"
 #include "talus/runout/grid/fv2d.hpp"
 #include "talus/runout/grid/terrain.hpp"
+#include "talus/runout/grid/two_phase_viscous.hpp"
 #include "talus/runout/two_phase_closures.hpp"
 
 namespace talus::runout {
@@ -94,6 +95,11 @@ struct TwoPhaseParams {
   double viscosity_alpha = 0.0;  // Pa s, eta = alpha e^(beta alpha_s)
   double viscosity_beta = 0.0;   // -
   double shear_factor = 3.0;     // chi
+  // The fluid's lateral viscous stress (two_phase_viscous.hpp); off by
+  // default: with a steep eta(alpha_s) (beta = 10) the flow's thin edges,
+  // alpha_s -> 1, make it stiff and the debris release converged worse
+  // (docs/validation/two-phase.md).
+  bool lateral_viscosity = false;
   // Virtual mass (seed eq. 35) on the stage's local forces (see the .cpp).
   bool virtual_mass = true;
   // The solid's centripetal load on curved beds (fv2d's term): its bed normal
@@ -196,6 +202,13 @@ class TwoPhaseSolver {
   // south, 1: east / north) and the solid's share of them.
   std::vector<double> bed_slope_x_, bed_slope_y_;
   std::vector<double> depth_x_[2], depth_y_[2], share_x_[2], share_y_[2];
+  // The fluid's kinematic viscosity per cell and its lateral stress's fluxes.
+  std::vector<double> nu_;
+  two_phase_detail::ViscousFluxes viscous_;
+  bool lateral_viscosity() const {
+    return p_.lateral_viscosity && p_.viscosity_alpha > 0.0 && p_.drag.fluid_density > 0.0;
+  }
+  void update_viscosity(const TwoPhaseState& in);  // nu_ of `in`'s solid fractions
 };
 
 }  // namespace talus::runout
