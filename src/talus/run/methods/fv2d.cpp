@@ -40,14 +40,7 @@ void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
 }
 
 Schedules Fv2dSimulation::schedules() const {
-  Schedules s;
-  s.series = OutputSchedule(std::max(scenario_.control.series_interval, 1e-12));
-  const double every = scenario_.control.checkpoint_interval;
-  s.checkpoints = OutputSchedule(every > 0.0 && !checkpoint_.empty() ? every : -1.0);
-  // Snapshot maps only when asked for (interval > 0): they are large.
-  const double maps = scenario_.control.snapshot_interval;
-  s.snapshots = OutputSchedule(maps > 0.0 && !checkpoint_.empty() ? maps : -1.0);
-  return s;
+  return grid_schedules(scenario_.control, !checkpoint_.empty());
 }
 
 // A resumed run's maxima and released volume come from its checkpoint.
@@ -123,14 +116,7 @@ MethodReport Fv2dSimulation::report() const {
   r.scenario = io::runout_scenario_to_json(scenario_);
   r.rate_key = "cell_updates_per_s";
   r.items = static_cast<double>(g.cells());
-  r.resolved = {{"cells_x", g.nx},
-                {"cells_y", g.ny},
-                {"cell_size_m", {g.dx, g.dy}},
-                {"x_west", scenario_.grid.x_west},
-                {"y_north", scenario_.grid.y_north},
-                {"threads", threads_}};
-  if (!scenario_.grid.release_resampling.empty())
-    r.resolved["release_resampling"] = scenario_.grid.release_resampling;
+  r.resolved = grid_resolved(scenario_.grid, threads_);
   r.metrics = {{"released_volume_m3", v0},
                {"volume_m3", volume},
                {"outflow_volume_m3", solver_.outflow_volume()},
@@ -184,16 +170,9 @@ Method fv2d_method() {
       what += "; release resampled: " + sc.grid.release_resampling;
     return Validation{what, sc.control.duration / dt, sc.control.duration};
   };
-  m.create = [](const io::ScenarioFile& f, const RunContext& ctx) -> std::unique_ptr<Simulation> {
-    auto sc = io::parse_runout_scenario(f);
-    // Built before the folder is made: bad input leaves nothing behind.
-    auto sim = std::make_unique<Fv2dSimulation>(sc, ctx.threads);
-    if (!ctx.resume) {
-      ctx.prepare();
-      sim = std::make_unique<Fv2dSimulation>(write_resolved_runout(sc, ctx.out), ctx.threads);
-    }
-    sim->write_to(ctx.out, ctx.resume);
-    return sim;
+  m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
+    return create_grid_run<Fv2dSimulation>(io::parse_runout_scenario(f), ctx.threads, ctx.out,
+                                           ctx.resume, ctx.prepare);
   };
   return m;
 }

@@ -5,6 +5,7 @@
 // (calibration, comparisons, tests); with one they write checkpoint.bin at
 // output.checkpoint_interval (runout/checkpoint.hpp).
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -125,18 +126,40 @@ class Fv2dSimulation : public Simulation {
   bool momentum_stop_ = false;  // stopped by run.stop_momentum_fraction
 };
 
+// Writes the resolved scenario into out/scenario.toml and reads it back: a
+// fresh run starts from the numbers a resumed one will read (an angle through
+// degrees and back may differ in its last bit).
+runout::RunoutScenario write_resolved_runout(const runout::RunoutScenario& scenario,
+                                             const std::filesystem::path& out);
+
+// The output intervals of a grid model's run (fv2d, two-phase): series
+// always; checkpoints and snapshot maps only when asked for and with files.
+Schedules grid_schedules(const runout::RunoutControl& control, bool files);
+// summary.json's "resolved" block of a grid model's run.
+nlohmann::json grid_resolved(const runout::GridSpec& grid, int threads);
+
+// A grid model's run as the registry creates it: parsed and built before
+// the folder is made (bad input leaves nothing behind); a fresh run starts
+// from the resolved scenario it writes (write_resolved_runout).
+template <class GridSimulation>
+std::unique_ptr<Simulation> create_grid_run(runout::RunoutScenario scenario, int threads,
+                                            const std::filesystem::path& out, bool resume,
+                                            const std::function<void()>& prepare) {
+  auto sim = std::make_unique<GridSimulation>(scenario, threads);
+  if (!resume) {
+    prepare();
+    sim = std::make_unique<GridSimulation>(write_resolved_runout(scenario, out), threads);
+  }
+  sim->write_to(out, resume);
+  return sim;
+}
+
 // A RunUp as summary.json writes it.
 nlohmann::json runup_json(const runout::RunUp& runup);
 
 // The warning of a runout run that ends before its mass has come to rest: its
 // deposit and run-out are not final.
 std::string still_moving(double time, double max_speed);
-
-// Writes the resolved scenario into out/scenario.toml and reads it back: a
-// fresh run starts from the numbers a resumed one will read (an angle through
-// degrees and back may differ in its last bit).
-runout::RunoutScenario write_resolved_runout(const runout::RunoutScenario& scenario,
-                                             const std::filesystem::path& out);
 
 // Runs a DAN scenario to its end without writing anything (for `talus
 // compare`, calibration and tests): the results of the finished run.

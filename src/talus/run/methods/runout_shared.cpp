@@ -2,6 +2,8 @@
 // from, and the warning of a run that ends with its mass still moving.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "talus/io/archive.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/output_observer.hpp"
@@ -70,6 +72,25 @@ void GridPathResults::add_metrics(nlohmann::json& m) const {
   m["rest_time_s"] = r.rest_time;
   m["runup_max"] = runup_json(r.runup_max);
   m["runup_final"] = runup_json(r.runup_final);
+}
+
+Schedules grid_schedules(const runout::RunoutControl& c, bool files) {
+  Schedules s;
+  s.series = OutputSchedule(std::max(c.series_interval, 1e-12));
+  s.checkpoints =
+      OutputSchedule(c.checkpoint_interval > 0.0 && files ? c.checkpoint_interval : -1.0);
+  // Snapshot maps only when asked for (interval > 0): they are large.
+  s.snapshots = OutputSchedule(c.snapshot_interval > 0.0 && files ? c.snapshot_interval : -1.0);
+  return s;
+}
+
+nlohmann::json grid_resolved(const runout::GridSpec& grid, int threads) {
+  const auto& g = grid.shape;
+  nlohmann::json r = {
+      {"cells_x", g.nx},       {"cells_y", g.ny},         {"cell_size_m", {g.dx, g.dy}},
+      {"x_west", grid.x_west}, {"y_north", grid.y_north}, {"threads", threads}};
+  if (!grid.release_resampling.empty()) r["release_resampling"] = grid.release_resampling;
+  return r;
 }
 
 }  // namespace talus::run
