@@ -15,5 +15,4 @@ echo "results:   $out/summary.json (\"flume\": arrival, run-up, deposit tail, wa
 echo "           $out/flume/front.csv, $out/flume/deposit_profile.csv, $out/series.csv"
 echo "ParaView:  $out/particles.pvd (field \"layer\") and $out/walls.pvd"
 echo "plots:"
-/usr/bin/python3 "$root/plots/plot_flume.py" "$out" | sed 's/^/  /'
-/usr/bin/python3 "$root/plots/plot_run.py" "$out" | sed 's/^/  /'
+/usr/bin/python3 "$root/plots/plot.py" "$out" | sed 's/^/  /'
