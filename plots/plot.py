@@ -33,7 +33,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def has_cohesion_loss(summary):
-    materials = summary.get("resolved", {}).get("materials", [])
+    # summary["scenario"] is the resolved scenario ("resolved" holds run figures).
+    materials = summary.get("scenario", {}).get("materials", [])
     return any(m.get("critical_volume_strain", 0) for m in materials if isinstance(m, dict))
 
 

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """plots/plot.py, the one plotting entry point, on short runs of bundled scenarios by
 name: the DAN flume, fv2d on terrain and on the flume's path, the two-phase debris
-flow, a DEM column collapse and an MPM column collapse. For each, plot.py picks the
-scripts from summary.json, exits 0 and prints only PNG paths, each a real PNG in
-RUN_DIR/plots, with the ones its method's script draws among them. A folder without
-summary.json is refused (exit 2).
+flow, a DEM column collapse, an MPM column collapse and the plan-view clay block. For
+each, plot.py picks the scripts from summary.json, exits 0 and prints only PNG paths,
+each a real PNG in RUN_DIR/plots, with the ones its method's script draws among them.
+A folder without summary.json is refused (exit 2).
 
 Args: <talus binary> <source dir>. Run with Debian's /usr/bin/python3.
 """
@@ -29,6 +29,8 @@ RUNS = [
                          "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}"],
      {"energy.png", "contacts.png"}),
     ("mpm_column_collapse", ["run.duration=0.01"], {"front.png"}),
+    # Cohesion loss (critical_volume_strain): the clay block's crack map as well.
+    ("mpm_clay_block_plan", ["run.duration=0.01"], {"front.png", "cracks.png"}),
 ]
 
 with tempfile.TemporaryDirectory() as tmp:
