@@ -77,7 +77,8 @@ int validate_command(const ValidateOptions& opt) {
 
 namespace {
 
-// The bundled scenario files, in name order (sub-folders included).
+// The bundled scenario files, in name order, from every sub-folder (dem/, mpm/,
+// runout/, compare/): a name is the file's stem, the folder is not part of it.
 std::vector<fs::path> bundled_scenarios() {
   const fs::path dir = scenarios_folder();
   if (!fs::is_directory(dir)) throw InputError(dir.string() + ": scenarios folder not found");
@@ -107,10 +108,18 @@ std::string resolve_scenario(const std::string& arg) {
   if (arg.empty() || fs::exists(arg) || arg.find('/') != std::string::npos ||
       fs::path(arg).extension() == ".toml")
     return arg;
+  std::vector<fs::path> found;
   for (const auto& f : bundled_scenarios())
-    if (f.stem() == arg) return f.string();
-  throw InputError(fmt::format(
-      "{}: neither a file nor the name of a bundled scenario (`talus list` shows them)", arg));
+    if (f.stem() == arg) found.push_back(f);
+  if (found.empty())
+    throw InputError(fmt::format(
+        "{}: neither a file nor the name of a bundled scenario (`talus list` shows them)", arg));
+  // Names are stems and the files sit in sub-folders: a clash must not pick
+  // one of two files silently.
+  if (found.size() > 1)
+    throw InputError(fmt::format("{}: the name of {} bundled scenarios ({}, {}); give the file",
+                                 arg, found.size(), found[0].string(), found[1].string()));
+  return found.front().string();
 }
 
 int list_command() {

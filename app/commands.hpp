@@ -25,7 +25,8 @@ int validate_command(const ValidateOptions& options);
 int list_command();
 
 // A scenario argument: a file as given, or the name of a bundled scenario
-// ("column_collapse" for scenarios/column_collapse.toml). InputError if neither.
+// ("column_collapse" for scenarios/dem/column_collapse.toml). InputError if
+// neither, or if files in two sub-folders share the name.
 std::string resolve_scenario(const std::string& arg);
 
 // Folder of the bundled scenarios: $TALUS_SCENARIOS, else the source tree's.

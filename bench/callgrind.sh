@@ -14,7 +14,7 @@ work=${BENCH_DIR:-/tmp/talus_callgrind}
 mkdir -p "$work"
 ck=$work/checkpoint_0.12
 if [ ! -f "$ck/checkpoint.bin" ]; then
-  "$talus" run "$root/scenarios/column_collapse.toml" --out "$ck" --force --quiet --threads 1 \
+  "$talus" run "$root/scenarios/dem/column_collapse.toml" --out "$ck" --force --quiet --threads 1 \
     --set run.duration=0.121 --set output.checkpoint_interval=0.06 \
     --set output.snapshots=false --set output.series_interval=0.121
 fi

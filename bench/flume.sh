@@ -10,7 +10,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$root/build/talus} th=${2:-2}
 out=${BENCH_DIR:-/tmp/talus_bench}/flume_A_model3_t$th
 echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) CPUs, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), load $(cut -d' ' -f1-3 /proc/loadavg)"
-"$bin" run "$root/scenarios/flume_A_model3.toml" --out "$out" --force --quiet --threads "$th" \
+"$bin" run "$root/scenarios/dem/flume_A_model3.toml" --out "$out" --force --quiet --threads "$th" \
   --set "output.snapshots=false" --set "output.checkpoint_interval=0"
 /usr/bin/python3 - "$out/summary.json" <<'PY'
 import json, sys

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Aspect-ratio sweep of the MPM granular column collapse against Lube et al. (2005).
 
-Runs scenarios/mpm_column_sweep.toml (L_i = 50 mm) for several a = H/L_i with
+Runs scenarios/mpm/mpm_column_sweep.toml (L_i = 50 mm) for several a = H/L_i with
 `talus run --set`, reads each run's summary.json and series.csv, prints a
 Markdown table and writes a PNG of (L_inf - L_i)/L_i and H_inf/L_i against a
 with Lube's planar laws: 1.2 a for a < 1.8, 1.9 a^(2/3) for a > 2.8, and
@@ -42,7 +42,7 @@ def run(talus, out, a, shape):
     duration = 0.3 + 3.0 * math.sqrt(height / 10.0)
     folder = os.path.join(out, f"{shape}_a{a:g}")
     reach = WIDTH * (1.0 + 1.5 * max(1.2 * a, 1.9 * a ** (2.0 / 3.0))) + 0.05
-    cmd = [talus, "run", os.path.join(ROOT, "scenarios", "mpm_column_sweep.toml"),
+    cmd = [talus, "run", os.path.join(ROOT, "scenarios", "mpm", "mpm_column_sweep.toml"),
            "--out", folder, "--force", "--threads", "1",
            "--set", f"run.shape=\"{shape}\"",
            "--set", f"run.duration={duration:.3f}",

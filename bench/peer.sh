@@ -27,7 +27,7 @@ cpu_of() { awk '{printf "%.2f", $1 + $2}' "$1"; }
 run_talus() {  # threads
   local th=$1 out=$work/talus_${nx}x${ny}x${nz}_${steps}_t$1 ld
   ld=$(load)
-  /usr/bin/time -f "%U %S" -o "$work/time_t$th" "$talus" run "$root/scenarios/column_collapse.toml" --out "$out" --force --quiet --threads "$th" \
+  /usr/bin/time -f "%U %S" -o "$work/time_t$th" "$talus" run "$root/scenarios/dem/column_collapse.toml" --out "$out" --force --quiet --threads "$th" \
     --set "run.duration=$t" --set "run.domain={min=[0,0,0],max=[$Lx,$ly,$Lz]}" \
     --set "walls.3.point=[0,$ly,0]" --set "particles.0.box={min=[0,0,0],max=[$lx,$ly,$lz]}" \
     --set "output.snapshots=false" --set "output.checkpoint_interval=0" --set "output.series_interval=$t"

@@ -13,7 +13,7 @@ out=${BENCH_DIR:-/tmp/talus_bench}/peer_talus_t$th
 # The folder is this script's: binaries older than the .talus-run record would
 # leave it unrecorded, and a newer --force refuses such a folder.
 rm -rf "$out"
-"$bin" run "$root/scenarios/column_collapse.toml" --out "$out" --force --quiet --threads "$th" \
+"$bin" run "$root/scenarios/dem/column_collapse.toml" --out "$out" --force --quiet --threads "$th" \
   --set "run.duration=$t" --set "run.domain={min=[0,0,0],max=[$Lx,$ly,$Lz]}" \
   --set "walls.3.point=[0,$ly,0]" --set "particles.0.box={min=[0,0,0],max=[$lx,$ly,$lz]}" \
   --set "output.snapshots=false" --set "output.checkpoint_interval=0" --set "output.series_interval=$t"

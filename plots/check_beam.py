@@ -1,4 +1,4 @@
-"""Granular beam check (scenarios/granular_beam_3pt.toml): reads the last
+"""Granular beam check (scenarios/dem/granular_beam_3pt.toml): reads the last
 particles_*.vtu and membrane_beam_*.vtu of a run folder (raw appended VTK XML as
 talus writes them) and prints how many grain centres lie outside the closed
 membrane (winding number by the triangles' solid angles), the enclosed

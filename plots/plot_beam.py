@@ -2,7 +2,7 @@
 """Granular beam in 3-point bending (Götz 2024 §5.2, Figs. 18 and 19): deflection over load.
 
 Usage: plot_beam.py OUT.png RUN_DIR [RUN_DIR ...]
-Each RUN_DIR is a finished `talus run` of scenarios/granular_beam_3pt*.toml. Left: the
+Each RUN_DIR is a finished `talus run` of scenarios/dem/granular_beam_3pt*.toml. Left: the
 deflection at the bottom centre over time with the load (beam.csv). Right: the deflection
 of each load step (beam_steps.csv, mean over the second half of the step) over the load,
 dots loading and crosses unloading as in the source, and the line of the Timoshenko fit

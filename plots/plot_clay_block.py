@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cracks of a clay block run (scenarios/mpm_clay_block*.toml; van den Bout §3).
+"""Cracks of a clay block run (scenarios/mpm/mpm_clay_block*.toml; van den Bout §3).
 
 Usage: plot_clay_block.py RUN_DIR [--corner-z Z] [--band B]
 Writes RUN_DIR/plots/cracks.png and RUN_DIR/cracks.json and prints their paths.

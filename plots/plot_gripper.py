@@ -2,7 +2,7 @@
 """Granular gripper (Götz 2024 §4.2, Figs. 11 and 12): force on the object and holding force.
 
 Usage: plot_gripper.py OUT.png RUN_DIR [RUN_DIR ...]
-Each RUN_DIR is a finished `talus run` of scenarios/granular_gripper*.toml (one grain
+Each RUN_DIR is a finished `talus run` of scenarios/dem/granular_gripper*.toml (one grain
 Young's modulus E_p each, e.g. --set materials.0.youngs_modulus=5e6). Left: the vertical
 force of the membrane on the object over time from gripper.csv (negative while it is
 pushed in, positive while the membrane holds it back during the pull), phases marked for

@@ -2,7 +2,7 @@
 """Pressure on the hollow sphere's object versus grain stiffness (Götz 2024 §4.3, Fig. 14).
 
 Usage: plot_hollow_sphere.py OUT.png RUN_DIR [RUN_DIR ...]
-Each RUN_DIR is a finished `talus run` of scenarios/hollow_sphere*.toml (one grain
+Each RUN_DIR is a finished `talus run` of scenarios/dem/hollow_sphere*.toml (one grain
 Young's modulus E_p each, e.g. --set materials.0.youngs_modulus=5e6). From its
 summary.json it takes E_p (the first [[particles]] source's material), the plateau
 p_obj and the continuum value of eq. (33); it draws p_obj / p_vac over E_p (log axis)

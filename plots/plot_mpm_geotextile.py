@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of MPM runs with membranes (the geotextile bag, scenarios/mpm_geotextile_bag*.toml).
+"""Plots of MPM runs with membranes (the geotextile bag, scenarios/mpm/mpm_geotextile_bag*.toml).
 
 Usage:
   plot_mpm_geotextile.py RUN_DIR [TIMES...]

@@ -2,7 +2,7 @@
 """Deviator stress versus axial strain of triaxial runs (Götz 2024 §3.3.1).
 
 Usage: plot_triaxial.py OUT.png RUN_DIR [RUN_DIR ...]
-Reads RUN_DIR/triaxial.csv of each run (talus run of scenarios/triaxial_*.toml)
+Reads RUN_DIR/triaxial.csv of each run (talus run of scenarios/dem/triaxial_*.toml)
 and draws sigma_d = p_plates - p_c over eps = ln(h0/h) for the loading phase
 (phase = 1), one curve per run labelled with the run folder's name. With two
 or more runs it also prints, on a common eps grid, the spread (max - min) of

@@ -9,11 +9,10 @@ echo "talus demo: flume geometry A, Kuen Model 3 (9099 disks, 3 s of flow) -> $o
 # The demo owns this folder: it is replaced on every `make demo` (removed
 # first: --force refuses a folder left by a killed demo or an older talus).
 rm -rf "$out"
-"$root/$build/talus" run "$root/scenarios/flume_A_model3.toml" --out "$out" --threads "$(nproc)"
+"$root/$build/talus" run "$root/scenarios/dem/flume_A_model3.toml" --out "$out" --threads "$(nproc)"
 echo
 echo "results:   $out/summary.json (\"flume\": arrival, run-up, deposit tail, wall forces)"
 echo "           $out/flume/front.csv, $out/flume/deposit_profile.csv, $out/series.csv"
 echo "ParaView:  $out/particles.pvd (field \"layer\") and $out/walls.pvd"
 echo "plots:"
-/usr/bin/python3 "$root/plots/plot_flume.py" "$out" | sed 's/^/  /'
-/usr/bin/python3 "$root/plots/plot_run.py" "$out" | sed 's/^/  /'
+/usr/bin/python3 "$root/plots/plot.py" "$out" | sed 's/^/  /'

@@ -18,12 +18,12 @@ cmake --build "$build" -j "$(nproc)" --target fuzz_scenario >/dev/null
 
 seeds=$build/fuzz-seeds corpus=$build/fuzz-corpus findings=$build/fuzz-findings
 mkdir -p "$seeds" "$corpus" "$findings"
-cp "$root"/scenarios/*.toml "$root"/tests/fuzz/regressions/* "$seeds"/
+cp "$root"/scenarios/*/*.toml "$root"/tests/fuzz/regressions/* "$seeds"/
 # Keys as dictionary words: `name =` at the start of a line, and `[table]` headers.
 {
-  cat "$root"/scenarios/*.toml "$root"/docs/scenario-format.md |
+  cat "$root"/scenarios/*/*.toml "$root"/docs/scenario-format.md |
     grep -oE '^\s*`?[a-z_0-9]+`? *=' | tr -d ' `=' | sort -u | sed 's/.*/"&"/'
-  cat "$root"/scenarios/*.toml | grep -oE '^\[\[?[a-z_.0-9]+\]\]?' | sort -u | sed 's/.*/"&"/'
+  cat "$root"/scenarios/*/*.toml | grep -oE '^\[\[?[a-z_.0-9]+\]\]?' | sort -u | sed 's/.*/"&"/'
 } >"$build/fuzz.dict"
 
 cd "$build"

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the synthetic valley of scenarios/two_phase_debris_valley.toml as ESRI ASCII grids.
+"""Writes the synthetic valley of scenarios/runout/two_phase_debris_valley.toml as ESRI ASCII grids.
 
 A torrent channel descending along x: 22 deg in the source reach, easing
 (parabolic, over 150 m) to a 3 deg fan; a V-shaped cross-section (side
@@ -8,7 +8,7 @@ thick over 50 m x 40 m, in the channel near the top; its solid fraction
 falls from 0.65 at the back to 0.45 at the front (a wetter snout), written as
 a raster. 100 x 50 cells of 5 m (500 m x 250 m), lower-left corner at
 (600000, 5200000).
-Usage: make_debris_valley.py OUT_DIR
+Usage: make_debris_valley.py OUT_DIR   (the bundled grids: scenarios/runout/debris_valley)
 """
 import math
 import os

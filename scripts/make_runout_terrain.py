@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""Writes the synthetic terrain of scenarios/runout_terrain_2d.toml as ESRI ASCII grids.
+"""Writes the synthetic terrain of scenarios/runout/runout_terrain_2d.toml as ESRI ASCII grids.
 
 A 32 deg slope that eases into a flat valley floor along x (a parabolic
 transition over 100 m), with a shallow gully down its middle; a 4 m high
 barrier across the run-out as a separate obstacle raster; and a 60 m x 40 m
 release area, 3 m thick, near the top. 90 x 50 cells of 5 m (450 m x 250 m),
 lower-left corner at (600000, 5200000).
-Usage: make_runout_terrain.py OUT_DIR
+Usage: make_runout_terrain.py OUT_DIR   (the bundled grids: scenarios/runout/runout_terrain)
 """
 import math
 import os

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the terrain of scenarios/two_phase_seed_section4.toml as ESRI ASCII grids.
+"""Writes the terrain of scenarios/runout/two_phase_seed_section4.toml as ESRI ASCII grids.
 
 The numerical tests of van den Bout et al. (2021) §4 release blocks on a
 slope that runs into a valley; their geometry is drawn in the paper's Fig. 6
@@ -7,7 +7,7 @@ only, which the text source does not hold. This is a stand-in of that kind,
 on the paper's 10 m cells: a 30 deg slope (x < 300 m) into a 100 m flat
 valley floor and a 20 deg counter-slope (x > 400 m); a block 100 m x 100 m,
 10 m high (10^5 m^3), released on the slope. 60 x 40 cells of 10 m.
-Usage: make_seed_slope.py OUT_DIR
+Usage: make_seed_slope.py OUT_DIR   (the bundled grids: scenarios/runout/seed_slope)
 """
 import math
 import os

@@ -2,7 +2,7 @@
 
 usage: /usr/bin/python3 scripts/vibration_convection_packing.py RUN_DIR OUT.csv [R H]
 
-RUN_DIR is the output of scenarios/vibration_convection_packing.toml; the first particle
+RUN_DIR is the output of scenarios/dem/vibration_convection_packing.toml; the first particle
 snapshot is read. Grains with sqrt(x^2 + y^2) + r <= R and r <= z <= H - r are kept (defaults
 R = 0.0135 m, H = 0.065 m: Götz 2024 §6.2), written as 'x, y, z, radius' for a
 [[particles]] source of type "file", and their count and solid fraction printed.

@@ -4,7 +4,7 @@
 # trend: the upper slope of the deposit steepens as the grain friction grows.
 # Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
-db=$src/scenarios/dam_break.toml
+db=$src/scenarios/dem/dam_break.toml
 coarse=(--set dam_break.release.radius_min=4e-3 --set dam_break.release.radius_max=8e-3
         --set dam_break.release.porosity=0.2 --set run.duration=1.0 --set output.snapshots=false
         --set dam_break.segment_length=0.05 --set dam_break.segments=2)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The clay blocks of van den Bout §3 in plan view (scenarios/mpm_clay_block_plan*.toml, as
+"""The clay blocks of van den Bout §3 in plan view (scenarios/mpm/mpm_clay_block_plan*.toml, as
 bundled: 5 mm cells, 1.25 m/s, non-local cohesion loss over 2 cm), run by the real binary and
 read by plots/plot_clay_block.py. Both blocks run at once, one thread each (~70 s).
 
@@ -36,7 +36,7 @@ with tempfile.TemporaryDirectory() as tmp:
     names = ("mpm_clay_block_plan", "mpm_clay_block_plan_strong")
     outs = {n: os.path.join(tmp, n) for n in names}
     # The damage is fixed once the block is at rest (0.19 s at 1.25 m/s): 0.25 s suffices.
-    runs = [subprocess.Popen([talus, "run", os.path.join(src, "scenarios", n + ".toml"),
+    runs = [subprocess.Popen([talus, "run", os.path.join(src, "scenarios", "mpm", n + ".toml"),
                               "--out", outs[n], "--quiet", "--threads", "1",
                               "--set", "run.duration=0.25"]) for n in names]
     for n, p in zip(names, runs):

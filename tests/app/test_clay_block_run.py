@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The clay blocks of van den Bout §3 (scenarios/mpm_clay_block*.toml) on a coarse grid
+"""The clay blocks of van den Bout §3 (scenarios/mpm/mpm_clay_block*.toml) on a coarse grid
 (4 cm cells instead of 2 cm; about 2000 points each), run by the real binary and read by
 plots/plot_clay_block.py.
 
@@ -16,7 +16,7 @@ What is asserted, and why:
   end is below 1 % of the start's (72 J at 2 m/s).
 The source's finer claim (a crack from the obstacle corner over half the weak block's length,
 only local damage in the strong one) is not asserted on this 3D set-up: the one 3D set-up that
-showed it (scenarios/mpm_clay_block_runout*.toml) shows it on 2.5 cm cells at 0.30-0.45 m/s
+showed it (scenarios/mpm/mpm_clay_block_runout*.toml) shows it on 2.5 cm cells at 0.30-0.45 m/s
 only, not on 2 or 4 cm cells (docs/validation.md "Clay block"). It is asserted in plan view,
 with a non-local cohesion loss, by test_clay_block_plan_run.py.
 
@@ -37,7 +37,7 @@ check = Checks()
 
 def run(tmp, name):
     out = os.path.join(tmp, name)
-    subprocess.run([talus, "run", os.path.join(src, "scenarios", name + ".toml"), "--out", out,
+    subprocess.run([talus, "run", os.path.join(src, "scenarios", "mpm", name + ".toml"), "--out", out,
                     "--quiet", "--threads", "1", "--set", "grid.cell_size=0.04",
                     "--set", "output.snapshot_interval=0.3"], check=True)
     return out

@@ -4,7 +4,7 @@
 source "$(dirname "$0")/check_lib.sh"
 small=(--set "run.duration=0.002" --set "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}"
        --set "output.snapshot_interval=0.001")
-cc=$src/scenarios/column_collapse.toml
+cc=$src/scenarios/dem/column_collapse.toml
 
 "$talus" validate "$cc" >"$tmp/out" 2>&1; rc=$?
 check "validate bundled scenario exits 0" '[ $rc -eq 0 ] && grep -q valid "$tmp/out"'
@@ -48,11 +48,19 @@ check "list shows bundled scenarios" '[ $rc -eq 0 ] && grep -q column_collapse "
 
 # Every bundled scenario validates as it is, by the name `talus list` shows.
 "$talus" list >"$tmp/list" 2>&1
-check "list shows every bundled file with its method" '[ "$(wc -l <"$tmp/list")" -eq "$(ls "$src"/scenarios/*.toml | wc -l)" ] && grep -Eq "^column_collapse +dem 3D +0.3 s" "$tmp/list"'
+check "list shows every bundled file with its method" '[ "$(wc -l <"$tmp/list")" -eq "$(find "$src"/scenarios -name "*.toml" | wc -l)" ] && grep -Eq "^column_collapse +dem 3D +0.3 s" "$tmp/list"'
+# The files sit in sub-folders (dem/, mpm/, runout/, compare/); a name is the
+# file's stem, so two files may not share one.
+check "list names are unique across the sub-folders" '[ -z "$(awk "{print \$1}" "$tmp/list" | sort | uniq -d)" ]'
+check "list shows a scenario of each sub-folder" 'grep -q "^flume_A_model3 " "$tmp/list" && grep -q "^mpm_flume_A " "$tmp/list" && grep -q "^two_phase_debris_valley " "$tmp/list" && grep -q "^compare_flume_A " "$tmp/list"'
 for name in $(awk '{print $1}' "$tmp/list"); do
   "$talus" validate "$name" >"$tmp/out" 2>&1; rc=$?
   check "bundled $name validates by name" '[ $rc -eq 0 ]'
 done
+mkdir -p "$tmp/clash/a" "$tmp/clash/b"
+cp "$cc" "$tmp/clash/a/same.toml"; cp "$cc" "$tmp/clash/b/same.toml"
+TALUS_SCENARIOS=$tmp/clash "$talus" validate same >"$tmp/out" 2>&1; rc=$?
+check "a name two sub-folders share is refused (exit 2)" '[ $rc -eq 2 ] && grep -q "give the file" "$tmp/out"'
 "$talus" validate no_such_scenario >"$tmp/out" 2>&1; rc=$?
 check "an unknown name is refused (exit 2)" '[ $rc -eq 2 ] && grep -q "talus list" "$tmp/out"'
 

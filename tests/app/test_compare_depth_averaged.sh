@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # talus compare with the depth-averaged methods on flume A
-# (scenarios/compare_flume_A.toml --methods dan,fv2d,two_phase): the grid
+# (scenarios/compare/compare_flume_A.toml --methods dan,fv2d,two_phase): the grid
 # models run on the flume extruded into 3 rows of 5 mm cells and report the
 # flume's figures as DAN does; the report repeats each method's own numbers,
 # the two-phase model without fluid gives fv2d's figures, both reach and
@@ -8,7 +8,7 @@
 # anything runs. Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
 
-"$talus" compare "$src/scenarios/compare_flume_A.toml" --methods dan,fv2d,two_phase \
+"$talus" compare "$src/scenarios/compare/compare_flume_A.toml" --methods dan,fv2d,two_phase \
   --out "$tmp/cmp" --quiet -j 1 >"$tmp/out" 2>&1; rc=$?
 check_rc "compare exits 0" "$tmp/out"
 for m in dan fv2d two_phase; do

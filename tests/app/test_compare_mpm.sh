@@ -49,7 +49,7 @@ method = "compare"
 name = "no_flume"
 [methods]
 mpm = "$root/tests/data/scenarios/mpm_resume.toml"
-dan = "$root/scenarios/runout_flume_A.toml"
+dan = "$root/scenarios/runout/runout_flume_A.toml"
 TOML
 "$talus" compare "$tmp/noflume.toml" --out "$tmp/nf" >"$tmp/out" 2>&1; rc=$?
 check "MPM scenario without [flume] refused before running (exit 2)" '[ $rc -eq 2 ] && grep -q "needs a \[flume\]" "$tmp/out" && [ ! -e "$tmp/nf" ]'

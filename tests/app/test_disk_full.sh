@@ -31,12 +31,12 @@ PY
 }
 
 # fv2d: series.csv (2 kB) fits, the 36 kB result rasters at the end do not.
-cannot_write fv2d 20 max_height.npy "$src/scenarios/runout_terrain_2d.toml" \
+cannot_write fv2d 20 max_height.npy "$src/scenarios/runout/runout_terrain_2d.toml" \
   --set output.series_interval=10
 # DAN: the bed along the path (path.csv, ~40 kB) with the first series row.
-cannot_write dan 8 path.csv "$src/scenarios/runout_flume_A.toml"
+cannot_write dan 8 path.csv "$src/scenarios/runout/runout_flume_A.toml"
 # DEM and MPM: the first particle snapshot.
-cannot_write dem 8 particles_000000.vtu "$src/scenarios/collapse_2d.toml" --set run.duration=0.05
-cannot_write mpm 8 particles_000000.vtu "$src/scenarios/mpm_column_collapse.toml" \
+cannot_write dem 8 particles_000000.vtu "$src/scenarios/dem/collapse_2d.toml" --set run.duration=0.05
+cannot_write mpm 8 particles_000000.vtu "$src/scenarios/mpm/mpm_column_collapse.toml" \
   --set run.duration=0.05
 finish disk_full

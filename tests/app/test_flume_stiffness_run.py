@@ -30,7 +30,7 @@ import tempfile
 from checks import Checks
 
 talus, src = sys.argv[1], sys.argv[2]
-sys.path.insert(0, os.path.join(src, "scripts"))
+sys.path.insert(0, os.path.join(src, "studies"))
 import flume_stiffness  # noqa: E402  (the same runs as the study script)
 
 window = 1.4  # s, Kuen's settling time

@@ -6,7 +6,7 @@
 source "$(dirname "$0")/check_lib.sh"
 small=(--set "run.duration=0.002" --set "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}"
        --set "output.snapshot_interval=0.001")
-cc=$src/scenarios/column_collapse.toml
+cc=$src/scenarios/dem/column_collapse.toml
 
 "$talus" run "$cc" --out "$tmp/run" --quiet "${small[@]}" >"$tmp/out" 2>&1; rc=$?
 check "run exits 0" '[ $rc -eq 0 ]'

@@ -3,7 +3,7 @@
 # an uninterrupted run: the final snapshot files are byte-identical.
 # Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
-args=(run "$src/scenarios/column_collapse.toml" --quiet
+args=(run "$src/scenarios/dem/column_collapse.toml" --quiet
       --set "run.duration=0.04" --set "particles.0.box={min=[0,0,0],max=[0.0201,0.0201,0.0402]}"
       --set "output.snapshot_interval=0.01" --set "output.checkpoint_interval=0.002"
       --set "output.series_interval=0.001")
@@ -36,7 +36,7 @@ PY
 same_metrics "$tmp/full" "$tmp/killed" || { echo "FAIL: summary metrics differ"; exit 1; }
 # The floor vibrates: the work it does on the grains (walls[].work_J, part of
 # the energy check's budget) must be carried across the resume too.
-c2=(run "$src/scenarios/collapse_2d.toml" --quiet --set "run.duration=0.4"
+c2=(run "$src/scenarios/dem/collapse_2d.toml" --quiet --set "run.duration=0.4"
     --set "output.checkpoint_interval=0.2" --set "output.snapshots=false"
     --set "walls.0.motion={amplitude=0.001, frequency=20, direction=[0, 1]}")
 "$talus" "${c2[@]}" --out "$tmp/full2d" || { echo "FAIL: uninterrupted 2D run"; exit 1; }

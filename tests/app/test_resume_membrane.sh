@@ -43,7 +43,7 @@ PY'
 # The sheet drop with 158 grains released just above the sheet, so that they
 # are on it (13 contacts with friction springs at the first checkpoint,
 # t = 0.02 s). About 7 s of wall time.
-sheet=(run "$src/scenarios/membrane_sheet_drop.toml" --quiet
+sheet=(run "$src/scenarios/dem/membrane_sheet_drop.toml" --quiet
        --set "run.duration=0.15" --set "membranes.0.self_contact=true"
        --set "particles.0.box={min=[0.03,0.03,0.0001],max=[0.07,0.07,0.012]}"
        --set "output.snapshot_interval=0.05" --set "output.series_interval=0.001"
@@ -57,7 +57,7 @@ check "sheet: self_contacts column" 'head -1 "$tmp/sheet-full/series.csv" | grep
 # 2 ms, then loading to 8 ms; checkpoints in both phases. About 3 s.
 area=4.908738521234052e-4  # pi R^2
 servo="{pressure=1e5,area=$area,speed=0.05,stop=0.002}"
-tri=(run "$src/scenarios/triaxial_case1.toml" --quiet
+tri=(run "$src/scenarios/dem/triaxial_case1.toml" --quiet
      --set "run.duration=0.008" --set "run.domain={min=[-0.03,-0.03,-0.01],max=[0.03,0.03,0.04]}"
      --set "walls.0.motion.servo=$servo" --set "walls.0.motion.start=0.002"
      --set "walls.1.motion.servo=$servo" --set "walls.1.motion.start=0.002"

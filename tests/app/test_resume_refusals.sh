@@ -4,7 +4,7 @@
 # checkpoint.bin that is not a file are refused with exit 2 and leave the
 # folder as it was. Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
-args=(run "$src/scenarios/column_collapse.toml" --quiet
+args=(run "$src/scenarios/dem/column_collapse.toml" --quiet
       --set "run.duration=0.004" --set "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}"
       --set "output.snapshot_interval=0.002" --set "output.checkpoint_interval=0.001")
 "$talus" "${args[@]}" --out "$tmp/run" >"$tmp/out" 2>&1; rc=$?

@@ -5,7 +5,7 @@
 # Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
 # About 2 s of wall time or more: 20000 steps of 5e-6 s.
-"$talus" run "$src/scenarios/column_collapse.toml" --out "$tmp/run" --log-interval 0.2 \
+"$talus" run "$src/scenarios/dem/column_collapse.toml" --out "$tmp/run" --log-interval 0.2 \
   --set "run.duration=0.1" --set "particles.0.box={min=[0,0,0],max=[0.0201,0.0201,0.0402]}" \
   --set "output.snapshots=false" 2>"$tmp/err"; rc=$?
 check "the run exits 0" '[ $rc -eq 0 ]'
@@ -20,15 +20,15 @@ check "log.txt says how the run ended" 'tail -2 "$tmp/run/log.txt" | head -1 | g
 check "and ends with the headline" 'tail -1 "$tmp/run/log.txt" | grep -Eq "dem: [0-9]+ particles, front at x = .* m; peak kinetic energy .* J at t = .* s; largest wall force .* N on"'
 check "which stderr carries once" '[ "$(grep -c "dem: [0-9]* particles" "$tmp/err")" = 1 ]'
 check "stderr of a batch job carries the same lines" '[ "$(grep -c " t = " "$tmp/err")" = "$(grep -c " t = " "$tmp/run/log.txt")" ] && grep -q "completed: 20000 steps" "$tmp/err"'
-"$talus" run "$src/scenarios/column_collapse.toml" --out "$tmp/quiet" --quiet \
+"$talus" run "$src/scenarios/dem/column_collapse.toml" --out "$tmp/quiet" --quiet \
   --set "run.duration=0.002" --set "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}" 2>"$tmp/err"
 check "--quiet keeps stderr empty but still writes log.txt" '[ ! -s "$tmp/err" ] && grep -q completed "$tmp/quiet/log.txt"'
 # Every method ends with its headline (DAN, fv2d, MPM; the flume adds its own).
-"$talus" run "$src/scenarios/runout_flume_A.toml" --out "$tmp/dan" --quiet --set run.duration=0.5
+"$talus" run "$src/scenarios/runout/runout_flume_A.toml" --out "$tmp/dan" --quiet --set run.duration=0.5
 check "a DAN run's headline: front, speed, depth" 'tail -2 "$tmp/dan/log.txt" | grep -Eq "dan: front at s = .* m; max speed .* m/s, max depth .* m"'
 check "... and, cut short, the warning that it still moves" 'tail -1 "$tmp/dan/log.txt" | grep -q "warning: the mass is still moving at the end"'
-"$talus" run "$src/scenarios/runout_terrain_2d.toml" --out "$tmp/fv2d" --quiet --set run.duration=2
+"$talus" run "$src/scenarios/runout/runout_terrain_2d.toml" --out "$tmp/fv2d" --quiet --set run.duration=2
 check "an fv2d run's headline: volume, areas, maxima" 'tail -2 "$tmp/fv2d/log.txt" | grep -Eq "fv2d: .* m\^3 released, .* m\^2 affected, .* deposit .*; max height .* m, max speed .* m/s, max pressure .* kPa"'
-"$talus" run "$src/scenarios/mpm_tilting_plate.toml" --out "$tmp/mpm" --quiet --set run.duration=0.05
+"$talus" run "$src/scenarios/mpm/mpm_tilting_plate.toml" --out "$tmp/mpm" --quiet --set run.duration=0.05
 check "an MPM run's headline: front, top, energy" 'tail -1 "$tmp/mpm/log.txt" | grep -Eq "mpm: 200 points, front advanced .* m, top changed .* m; peak kinetic energy .* J at t = .* s"'
 finish run_log

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The runout scenarios end to end through the talus binary: the 1D DAN flume
-(scenarios/runout_flume_A.toml, full length: 0.1 s of wall time) and the 2D
-terrain run (scenarios/runout_terrain_2d.toml, 40 s of its 150 s). Checks the
+(scenarios/runout/runout_flume_A.toml, full length: 0.1 s of wall time) and the 2D
+terrain run (scenarios/runout/runout_terrain_2d.toml, 40 s of its 150 s). Checks the
 files and fields a user reads, that they are consistent with each other, and
 that the plot scripts (plots/plot_dan.py, plots/plot_runout2d.py) write PNGs.
 
@@ -26,7 +26,7 @@ check = Checks()
 
 
 def run(scenario, out, *sets):
-    args = [talus, "run", os.path.join(src, "scenarios", scenario), "--out", out, "-q", "--threads", "1"]
+    args = [talus, "run", os.path.join(src, "scenarios", "runout", scenario), "--out", out, "-q", "--threads", "1"]
     for s in sets:
         args += ["--set", s]
     subprocess.run(args, check=True)

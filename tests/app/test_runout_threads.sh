@@ -5,7 +5,7 @@
 # change a number (issue 28 §1: a busy machine may switch the team at any
 # segment). Args: <talus binary> <source dir>.
 source "$(dirname "$0")/check_lib.sh"
-scenario=$src/scenarios/runout_terrain_2d.toml
+scenario=$src/scenarios/runout/runout_terrain_2d.toml
 # With snapshot maps every 20 s (their own loop over the cells).
 snap=output.snapshot_interval=20
 "$talus" run "$scenario" --out "$tmp/one" --quiet -j 1 --set $snap >"$tmp/py" 2>&1; rc=$?

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The bundled two-phase debris flow (scenarios/two_phase_debris_valley.toml,
+"""The bundled two-phase debris flow (scenarios/runout/two_phase_debris_valley.toml,
 60 s of its 120 s) end to end through the talus binary: the maps of each
 phase, the series and summary.json agree with each other, the snapshots are
 listed, and plots/plot_runout2d.py draws the two-phase maps as PNGs.
@@ -28,7 +28,7 @@ MAPS = ["max_height", "max_solid_height", "max_fluid_height", "max_solid_speed",
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "valley")
-    subprocess.run([talus, "run", os.path.join(src, "scenarios", "two_phase_debris_valley.toml"),
+    subprocess.run([talus, "run", os.path.join(src, "scenarios", "runout", "two_phase_debris_valley.toml"),
                     "--out", out, "-q", "--threads", "1", "--set", "run.duration=60"], check=True)
     s = json.load(open(os.path.join(out, "summary.json")))
     m = s["metrics"]

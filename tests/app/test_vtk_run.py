@@ -22,7 +22,7 @@ check = Checks()
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "run")
-    subprocess.run([talus, "run", os.path.join(src, "scenarios", "column_collapse.toml"), "--out", out,
+    subprocess.run([talus, "run", os.path.join(src, "scenarios", "dem", "column_collapse.toml"), "--out", out,
                     "--quiet", "--set", "run.duration=0.002",
                     "--set", "particles.0.box={min=[0,0,0],max=[0.01206,0.00804,0.02412]}",
                     "--set", "output.snapshot_interval=0.001"], check=True)

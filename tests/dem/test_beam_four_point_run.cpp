@@ -1,4 +1,4 @@
-// The reduced granular beam in 4-point bending (scenarios/
+// The reduced granular beam in 4-point bending (scenarios/dem/
 // granular_beam_4pt_small.toml, Götz 2024 §5.3 at 15 x 3 x 3 cm with 657
 // grains), bent to ε = 0.006 only: about 15 s per run on one thread. Through
 // the run loop, so that the grains' friction changes at bending_start
@@ -27,7 +27,7 @@ namespace {
 
 DemScenario small_beam(double max_strain) {
   auto sc = io::parse_dem_scenario(io::load_scenario_file(
-      std::string(TALUS_SOURCE_DIR) + "/scenarios/granular_beam_4pt_small.toml",
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/granular_beam_4pt_small.toml",
       {"beam.max_strain=" + std::to_string(max_strain)}));
   sc.run.duration = sc.beam->end();
   return sc;

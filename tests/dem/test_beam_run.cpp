@@ -1,4 +1,4 @@
-// The reduced granular beam in 3-point bending (scenarios/
+// The reduced granular beam in 3-point bending (scenarios/dem/
 // granular_beam_3pt_small.toml, Götz 2024 §5.2 at 6 x 3 x 3 cm with 176
 // grains): about 7 s per run on one thread. It checks what the rig must do and
 // what a beam at rest must show (measured values of the bundled case in
@@ -26,7 +26,7 @@ namespace {
 
 DemScenario small_beam() {
   return io::parse_dem_scenario(io::load_scenario_file(
-      std::string(TALUS_SOURCE_DIR) + "/scenarios/granular_beam_3pt_small.toml", {}));
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/granular_beam_3pt_small.toml", {}));
 }
 
 // Runs sc to the end of its last load step with the observer; the summary.

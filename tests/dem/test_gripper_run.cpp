@@ -1,4 +1,4 @@
-// The reduced granular gripper (scenarios/granular_gripper_small.toml, Götz
+// The reduced granular gripper (scenarios/dem/granular_gripper_small.toml, Götz
 // 2024 §4.2 at half size with a fast protocol) run up to 30 ms into the
 // pull: about a minute on one thread. It checks what holds robustly there
 // (measured values of the bundled case in the comments): the phases come
@@ -25,7 +25,7 @@ using analysis::GripperPhase;
 
 TEST(GripperRun, ReducedGripThroughAllPhases) {
   const auto sc = io::parse_dem_scenario(io::load_scenario_file(
-      std::string(TALUS_SOURCE_DIR) + "/scenarios/granular_gripper_small.toml", {}));
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/granular_gripper_small.toml", {}));
   ASSERT_TRUE(sc.gripper.has_value());
   const auto& g = *sc.gripper;
   auto run = build_dem<3>(sc, {});

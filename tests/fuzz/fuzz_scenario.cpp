@@ -24,8 +24,11 @@ namespace {
 using namespace talus;
 
 // The file "lives" among the bundled scenarios so that `extends` and relative
-// raster or mesh names reach real files.
-const std::string kPath = std::string(TALUS_SOURCE_DIR) + "/scenarios/fuzz_input.toml";
+// raster or mesh names reach real files: by default among the DEM ones, which
+// the seeds' extends and data files name (flume_A_model3.toml, the packing
+// .csv); the replay places each bundled file at its own path instead.
+const std::string kDefaultPath = std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/fuzz_input.toml";
+std::string g_path = kDefaultPath;
 
 [[noreturn]] void finding(const char* what, const std::string& a, const std::string& b) {
   std::fprintf(stderr, "fuzz_scenario: %s\n--- first\n%s\n--- second\n%s\n", what, a.c_str(),
@@ -41,12 +44,12 @@ std::string emit(const io::ScenarioFile& file) {
 }
 
 void read(std::string_view text, const std::vector<std::string>& sets) {
-  const auto file = io::load_scenario_text(text, kPath, sets);
+  const auto file = io::load_scenario_text(text, g_path, sets);
   const std::string resolved = emit(file);
   if (resolved.empty()) return;
   std::string again;
   try {
-    again = emit(io::load_scenario_text(resolved, kPath));
+    again = emit(io::load_scenario_text(resolved, g_path));
   } catch (const InputError& e) {
     finding(("the resolved scenario does not read back: " + std::string(e.what())).c_str(),
             resolved, "");
@@ -55,6 +58,9 @@ void read(std::string_view text, const std::vector<std::string>& sets) {
 }
 
 }  // namespace
+
+// The path the next inputs are read at; "" for the default (replay_main.cpp).
+void fuzz_scenario_place(const std::string& path) { g_path = path.empty() ? kDefaultPath : path; }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view all(reinterpret_cast<const char*>(data), size);

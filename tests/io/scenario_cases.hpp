@@ -33,9 +33,9 @@ inline int marked_line(const std::string& text) {
   return 0;
 }
 
-// The text of a bundled scenario (scenarios/NAME).
-inline std::string bundled(const std::string& name) {
-  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/scenarios/" + name);
+// The text of a bundled scenario (scenarios/PATH, e.g. "dem/membrane_sheet_drop.toml").
+inline std::string bundled(const std::string& path) {
+  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/scenarios/" + path);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();

@@ -211,13 +211,13 @@ TEST(DeclaredLaws, DemMaterialsReadTheKeysTheContactLawDeclares) {
 // Membrane contacts have one law; a run naming another is refused, not run
 // with two laws.
 TEST(DeclaredLaws, MembranesRefuseAContactLawTheyDoNotUse) {
-  std::string text = cases::bundled("membrane_sheet_drop.toml");
+  std::string text = cases::bundled("dem/membrane_sheet_drop.toml");
   text = edit(text, "model = \"viscoelastic_hertz\"", "model = \"hertz_mindlin\"");
   text = edit(text, "friction = 0.3\n", "friction = 0.3\nrestitution = 0.5\n");
   text = edit(text, "friction = 0.5\n", "friction = 0.5\nrestitution = 0.5\n");
   const std::string message = error_of([&] {
     parse_dem_scenario(
-        load_scenario_text(text, std::string(TALUS_SOURCE_DIR) + "/scenarios/bad.toml"));
+        load_scenario_text(text, std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/bad.toml"));
   });
   EXPECT_NE(message.find("grain-membrane contacts use the 'viscoelastic_hertz' law"),
             std::string::npos)

@@ -14,7 +14,7 @@ using cases::BadCase;
 using cases::bundled;
 using cases::edit;
 
-const std::string kSmall = bundled("granular_beam_3pt_small.toml");
+const std::string kSmall = bundled("dem/granular_beam_3pt_small.toml");
 
 void expect_small(const dem::DemScenario& s) {
   ASSERT_TRUE(s.beam.has_value());
@@ -36,8 +36,8 @@ TEST(BeamScenario, ResolvedScenarioKeepsTheKeys) {
 }
 
 TEST(BeamScenario, FullSizeCaseParses) {
-  const auto s = parse_dem_scenario(
-      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/granular_beam_3pt.toml", {}));
+  const auto s = parse_dem_scenario(load_scenario_file(
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/granular_beam_3pt.toml", {}));
   ASSERT_TRUE(s.beam.has_value());
   // Götz 2024 §5.2: F = 0 -> 10 N -> 0 in 1 N steps on a 40 x 8 x 8 cm beam.
   EXPECT_EQ(s.beam->load_steps, 10);
@@ -62,7 +62,7 @@ TEST(BeamScenario, LoadScheduleStepsUpAndDown) {
   EXPECT_EQ(b.load_at(0.125), 0.0);
 }
 
-const std::string kFour = bundled("granular_beam_4pt_small.toml");
+const std::string kFour = bundled("dem/granular_beam_4pt_small.toml");
 
 TEST(BeamScenario, FourPointParsesAndDerivesTheRodsTravel) {
   for (const auto& text : {kFour, std::string()}) {

@@ -137,7 +137,7 @@ TEST(ScenarioExtends, FileNamesResolveAgainstTheFileTheyAreWrittenIn) {
 }
 
 TEST(ScenarioExtends, BundledFlumeVariantsDifferOnlyWhereTheySay) {
-  const std::string dir = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
+  const std::string dir = std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/";
   const auto a3 = parse_dem_scenario(load_scenario_file(dir + "flume_A_model3.toml", {}));
   const auto a1 = parse_dem_scenario(load_scenario_file(dir + "flume_A_model1.toml", {}));
   const auto c3 = parse_dem_scenario(load_scenario_file(dir + "flume_C_model3.toml", {}));

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using cases::error_of;
 
-const std::string kCollapse = std::string(TALUS_SOURCE_DIR) + "/scenarios/collapse_2d.toml";
+const std::string kCollapse = std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/collapse_2d.toml";
 
 fs::path folder() {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -14,7 +14,7 @@ using cases::BadCase;
 using cases::bundled;
 using cases::edit;
 
-const std::string kSmall = bundled("granular_gripper_small.toml");
+const std::string kSmall = bundled("dem/granular_gripper_small.toml");
 
 // The small case: the object's top starts at -22 mm and ends the push 14 mm
 // above the rest bottom (-20 mm), 16 mm at 0.1 m/s from 0.17 s.
@@ -43,8 +43,8 @@ TEST(GripperScenario, ResolvedScenarioKeepsTheKeys) {
 }
 
 TEST(GripperScenario, FullSizeCaseParses) {
-  const auto s = parse_dem_scenario(
-      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/granular_gripper.toml", {}));
+  const auto s = parse_dem_scenario(load_scenario_file(
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/granular_gripper.toml", {}));
   ASSERT_TRUE(s.gripper.has_value());
   // Götz 2024 §4.2: R = 40 mm, 10 mm/s to 28 mm depth, 90 kPa, 2.5 mm/s.
   EXPECT_DOUBLE_EQ(s.membranes[0].radius, 0.04);

@@ -97,7 +97,7 @@ TEST(HollowSphereScenario, ResolvedScenarioKeepsTheKeys) {
 TEST(HollowSphereScenario, BundledCasesParse) {
   for (const char* name : {"hollow_sphere.toml", "hollow_sphere_half.toml"}) {
     const auto s = parse_dem_scenario(
-        load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/" + name, {}));
+        load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/" + name, {}));
     ASSERT_TRUE(s.hollow_sphere.has_value()) << name;
     EXPECT_DOUBLE_EQ(s.membranes[1].pressure, -9e4) << name;  // Götz: p_vac = 90 kPa
   }

@@ -17,18 +17,18 @@ using cases::bundled;
 using cases::edit;
 using cases::error_of;
 
-const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
+const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/";
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
 // The runout scenario NAME with `from` replaced by `to`, as if it were the file
-// itself (relative file names resolve in scenarios/); the message of its error
+// itself (relative file names resolve in scenarios/runout/); the message of its error
 // must start with "file:line:" of the line marked "# <-" and contain expected.
 void expect_runout_error(const std::string& name, const std::string& from, const std::string& to,
                          const std::string& expected) {
-  const std::string text = edit(bundled(name), from, to);
+  const std::string text = edit(bundled("runout/" + name), from, to);
   const std::string path = kScenarios + name;
   const std::string message =
       error_of([&] { parse_runout_scenario(load_scenario_text(text, path)); });
@@ -53,7 +53,7 @@ TEST(Refusals, FixedLengthArraysWithANumberTooMany) {
   expect_runout_error("runout_profile_slope.toml", "polygon = [[1.0, 9.3], [4.0, 7.2],",
                       "polygon = [[1.0, 9.3, 0], [4.0, 7.2], # <-\n",
                       "expected a list of points [[x, y], ...]");
-  const std::string sheet = bundled("membrane_sheet_drop.toml");
+  const std::string sheet = bundled("dem/membrane_sheet_drop.toml");
   for (const char* ramp : {"[0, 0.02, 5]", "[0, 0.02, 0]", "[0.02]"}) {
     const std::string text =
         edit(sheet, "fixed = \"edge\"",

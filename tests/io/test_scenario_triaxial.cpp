@@ -123,7 +123,7 @@ TEST(TriaxialScenario, CheckpointsAreAccepted) {
 
 TEST(TriaxialScenario, BundledCaseParses) {
   const auto s = parse_dem_scenario(
-      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/triaxial_case1.toml", {}));
+      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/dem/triaxial_case1.toml", {}));
   ASSERT_TRUE(s.triaxial.has_value());
   EXPECT_DOUBLE_EQ(s.membranes[0].pressure, -1e5);  // Götz: p_c = 100 kPa
 }

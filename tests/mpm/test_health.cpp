@@ -90,7 +90,7 @@ TEST(MpmHealth, DilatantRunStopsWithTheAngleNamed) {
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   const auto file = io::load_scenario_file(
-      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block_plan.toml",
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_clay_block_plan.toml",
       {"grid.cell_size=0.02", "materials.0.dilatancy_angle=10", "run.duration=0.05"});
   const MpmScenario sc = io::parse_mpm_scenario(file);
   run::MpmSimulation<2> sim(sc, build_mpm<2>(sc));

@@ -39,9 +39,9 @@ double centre_of_mass_y(const Particles<2>& p) {
 TEST(MpmGeotextileBag, PassesTheOpeningWithAPeakThenAResidualTension) {
   const int before = omp_get_max_threads();
   omp_set_num_threads(1);
-  const auto file =
-      io::load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_geotextile_bag.toml",
-                             {"grid.cell_size=0.2", "membranes.0.spacing=0.1", "run.duration=4.0"});
+  const auto file = io::load_scenario_file(
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_geotextile_bag.toml",
+      {"grid.cell_size=0.2", "membranes.0.spacing=0.1", "run.duration=4.0"});
   const MpmScenario sc = io::parse_mpm_scenario(file);
   Solver<2> s = build_mpm<2>(sc);
   const double opening = sc.rigid_bodies[0].motion.start, y0 = centre_of_mass_y(s.particles);

@@ -184,8 +184,8 @@ TEST(MpmMembraneScenario, ThreeDimensionalBadInputNamesTheKey) {
 }
 
 TEST(MpmMembraneScenario, BundledGeotextileBagBuilds) {
-  const auto file =
-      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_geotextile_bag.toml", {});
+  const auto file = load_scenario_file(
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_geotextile_bag.toml", {});
   const auto sc = parse_mpm_scenario(file);
   const auto solver = mpm::build_mpm<2>(sc);
   ASSERT_EQ(solver.membranes.size(), 1u);

@@ -125,12 +125,12 @@ TEST(MpmScenario, RigidBodiesParseRoundTripAndBuild) {
 }
 
 // 3D rigid bodies turned about an axis (the clay block's run-out and obstacle,
-// scenarios/mpm_clay_block.toml): the boundary particles and their normals
+// scenarios/mpm/mpm_clay_block.toml): the boundary particles and their normals
 // are turned about the hinge; the turned box must lie inside the grid; a
 // body one particle thick is refused (its top and bottom normals would cancel).
 TEST(MpmScenario, TurnedRigidBodiesIn3D) {
   const auto file =
-      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block.toml", {});
+      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_clay_block.toml", {});
   const auto sc = parse_mpm_scenario(file);
   ASSERT_EQ(sc.rigid_bodies.size(), 3u);
   const auto& runout = sc.rigid_bodies[1];
@@ -199,8 +199,8 @@ motion = { hinge = [0.5, 0.4, 0.5] }
 }
 
 TEST(MpmScenario, BundledColumnBuilds) {
-  const auto file =
-      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_column_collapse.toml", {});
+  const auto file = load_scenario_file(
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_column_collapse.toml", {});
   const auto sc = parse_mpm_scenario(file);
   const auto solver = mpm::build_mpm<2>(sc);
   // 8 cells x 2 points across 91 mm, 56 cells x 2 up 634 mm (rounded).
@@ -216,7 +216,7 @@ TEST(MpmScenario, BundledColumnBuilds) {
 // (unless that is 0: switched off).
 TEST(MpmScenario, PlanViewBed) {
   const auto file = load_scenario_file(
-      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm_clay_block_plan_strong.toml", {});
+      std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_clay_block_plan_strong.toml", {});
   const auto sc = parse_mpm_scenario(file);
   EXPECT_EQ(sc.dimension, 2);
   EXPECT_EQ(sc.solver.basal_friction, 0.4);

@@ -2,8 +2,8 @@
 """Physics fingerprints of every bundled scenario, for refactors that must not
 change results ("same bits before and after").
 
-Runs each scenario of scenarios/ shortened with --set run.duration=..., on one
-thread, and hashes what a run produced:
+Runs each scenario of scenarios/ (every sub-folder) shortened with
+--set run.duration=..., on one thread, and hashes what a run produced:
   final    the last snapshot of every .pvd (particles, points, membranes, walls)
            and every map that holds the end state (fv2d .npy/.asc/.tif)
   summary  summary.json without what is not physics (wall-clock times, rates,
@@ -110,12 +110,15 @@ def fingerprint(run):
 
 def run_all(talus, only):
     results = {}
-    names = sorted(f[:-5] for f in os.listdir(SCENARIOS) if f.endswith(".toml"))
+    # Keyed by name (the stem, as `talus run NAME`), from every sub-folder.
+    paths = {f[:-5]: os.path.join(d, f) for d, _, fs in os.walk(SCENARIOS) for f in fs
+             if f.endswith(".toml")}
+    names = sorted(paths)
     with tempfile.TemporaryDirectory() as tmp:
         for name in names:
             if name in SKIP or (only and name not in only):
                 continue
-            path = os.path.join(SCENARIOS, name + ".toml")
+            path = paths[name]
             method = method_of(path)
             dur = DURATION_BY_NAME.get(name, DURATION.get(method, "0.01"))
             out = os.path.join(tmp, name)

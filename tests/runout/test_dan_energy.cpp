@@ -15,7 +15,7 @@ namespace talus::runout {
 namespace {
 
 RunoutScenario bundled(const std::string& name) {
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/" + name;
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/" + name;
   return io::parse_runout_scenario(io::load_scenario_file(file, {}));
 }
 

@@ -20,7 +20,7 @@ struct FlumeRun {
 };
 
 FlumeRun run_flume(std::size_t blocks, double courant) {
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout_flume_A.toml";
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/runout_flume_A.toml";
   auto sc = io::parse_runout_scenario(io::load_scenario_file(file, {}));
   sc.release.blocks = blocks;
   sc.control.courant = courant;
@@ -55,7 +55,7 @@ TEST(DanFlume, RunsAndReportsFlumeResults) {
   EXPECT_LT(res.tail_s, flume.chute_end_s());
   EXPECT_GE(res.tail_s, res.tail_s_absolute);
   // simulate_dan (for talus compare) is the same run without files.
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout_flume_A.toml";
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/runout_flume_A.toml";
   const auto same = run::simulate_dan(io::parse_runout_scenario(io::load_scenario_file(file, {})));
   EXPECT_EQ(same.runup_max.s, res.runup_max.s);
   EXPECT_EQ(same.front.size(), res.front.size());

@@ -57,7 +57,7 @@ constexpr std::size_t kRows = 3;
 constexpr double kFrontDepth = 1e-3;  // 2D front: last column deeper than this (bed-normal)
 
 RunoutScenario flume_scenario() {
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout_flume_A.toml";
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/runout_flume_A.toml";
   auto sc = io::parse_runout_scenario(io::load_scenario_file(file, {}));
   sc.params.pressure.mode = EarthPressureMode::SavageHutter;
   sc.params.pressure.modify_basal_angle = false;

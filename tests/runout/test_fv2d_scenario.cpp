@@ -12,7 +12,7 @@
 namespace talus::io {
 namespace {
 
-const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
+const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/";
 const std::string kFile = kScenarios + "runout_terrain_2d.toml";
 
 void expect_error(const std::vector<std::string>& sets, const std::string& needle) {

@@ -14,7 +14,7 @@
 namespace talus::io {
 namespace {
 
-const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
+const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/";
 
 const std::string kBase = R"(method = "runout"
 [run]

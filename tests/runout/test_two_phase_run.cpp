@@ -18,7 +18,7 @@
 namespace talus::run {
 namespace {
 
-const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
+const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/";
 
 // An ESRI ASCII grid of 30 x 16 cells of 2 m with value(i, j) (j = 0 the
 // northern row), in the test's temporary folder.

@@ -16,7 +16,7 @@ using cases::bundled;
 using cases::edit;
 using cases::error_of;
 
-const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/";
+const std::string kScenarios = std::string(TALUS_SOURCE_DIR) + "/scenarios/runout/";
 const std::string kName = "two_phase_debris_valley.toml";
 
 // The bundled scenario with `from` replaced by `to`, read as if it were the
@@ -24,7 +24,7 @@ const std::string kName = "two_phase_debris_valley.toml";
 // "# <-", quote `key` and contain `expected`.
 void expect_error(const std::string& from, const std::string& to, const std::string& key,
                   const std::string& expected) {
-  const std::string text = edit(bundled(kName), from, to);
+  const std::string text = edit(bundled("runout/" + kName), from, to);
   const std::string path = kScenarios + kName;
   const std::string message =
       error_of([&] { parse_runout_scenario(load_scenario_text(text, path)); });
@@ -59,7 +59,7 @@ TEST(TwoPhaseScenario, ResolvedTomlReadsBack) {
   EXPECT_EQ(runout_scenario_to_json(again).dump(), runout_scenario_to_json(sc).dump());
   // A constant fraction and rates come back too (rates in mm/h).
   const std::string text =
-      edit(bundled(kName), "solid_fraction_file = \"debris_valley/solid_fraction.asc\"",
+      edit(bundled("runout/" + kName), "solid_fraction_file = \"debris_valley/solid_fraction.asc\"",
            "solid_fraction = 0.6\nfluid_fraction = 0.4\n[hydrology]\nrainfall = 36\n"
            "infiltration = 3.6");
   const auto constant = parse_runout_scenario(load_scenario_text(text, kScenarios + kName));
@@ -82,7 +82,7 @@ TEST(TwoPhaseScenario, FractionsOutOfRangeOrNotSummingToOne) {
                "solid_fraction_file", "expected one of them");
   // Neither: named at the table's header.
   const std::string text =
-      edit(edit(bundled(kName), kFractionFile, ""), "[release]", "[release] # <-");
+      edit(edit(bundled("runout/" + kName), kFractionFile, ""), "[release]", "[release] # <-");
   const std::string path = kScenarios + kName;
   const std::string message =
       error_of([&] { parse_runout_scenario(load_scenario_text(text, path)); });
@@ -120,7 +120,7 @@ TEST(TwoPhaseScenario, PhasesOutOfRange) {
                "above internal_friction");
   expect_error("grain_diameter = 0.005", "grain_diameter = 0 # <-", "grain_diameter", "positive");
   // A required key left out: named with its table.
-  const std::string text = edit(bundled(kName), "grain_diameter = 0.005\n", "");
+  const std::string text = edit(bundled("runout/" + kName), "grain_diameter = 0.005\n", "");
   const std::string message =
       error_of([&] { parse_runout_scenario(load_scenario_text(text, kScenarios + kName)); });
   EXPECT_NE(message.find("grain_diameter"), std::string::npos) << message;
@@ -141,8 +141,8 @@ TEST(TwoPhaseScenario, RatesAndTablesOfOtherModels) {
   expect_error("duration = 120.0", "duration = 120.0\nstop_momentum_fraction = 0.01 # <-",
                "stop_momentum_fraction", "is only used by model 'fv2d'");
   // The two-phase tables in a single-phase grid run.
-  const std::string fv2d =
-      edit(bundled("runout_terrain_2d.toml"), "[output]", "[fluid] # <-\ndensity = 1000\n[output]");
+  const std::string fv2d = edit(bundled("runout/runout_terrain_2d.toml"), "[output]",
+                                "[fluid] # <-\ndensity = 1000\n[output]");
   const std::string path = kScenarios + "runout_terrain_2d.toml";
   const std::string message =
       error_of([&] { parse_runout_scenario(load_scenario_text(fv2d, path)); });

@@ -5,8 +5,8 @@
 //   method = "compare"
 //   name = "flume_A"
 //   [methods]
-//   dem = "flume_A_model3.toml"
-//   dan = "runout_flume_A.toml"
+//   dem = "../dem/flume_A_model3.toml"   (relative to this file)
+//   dan = "../runout/runout_flume_A.toml"
 #include <map>
 #include <string>
 

@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Flume runs side by side for a time-step study (docs/validation.md, "Time step").
 
+Feeds docs/validation/flume.md, section "Time step: Model 3's deposit on the chute
+depends on it": its table.
+
 Usage: flume_step_table.py LABEL=RUN_DIR ...   (prints a Markdown table)
 Per run, from summary.json and flume/deposit_profile.csv: the step, when the
 front reaches the barrier, the final run-up along the barrier, where the main

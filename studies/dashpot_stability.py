@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Stability and restitution of the stepper's spring-dashpot on one degree of freedom.
 
+Feeds docs/performance.md, section "Flume, geometry A, Model 3": the time step limits of
+the spring-dashpot.
+
 Usage: dashpot_stability.py
 
 The DEM stepper (dem/stepper.cpp) is velocity Verlet whose contact force at x(n+1)

@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Which grains move, snapshot by snapshot, in a flume run (particles_*.vtu).
 
+Feeds docs/validation/flume.md, section "Full runs (3 s of flow; ...)": which grains
+move, against Kuen's description.
+
 Usage: flume_motion.py [--rest V] RUN_DIR...
 Kuen (2011, §6, Model 3) describes the motion from his snapshots: at 0.2 s the
 lowest front grains accelerate fastest while the rearmost stay at rest; from

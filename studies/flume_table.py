@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """The table of full flume runs in docs/validation.md, from their run folders.
 
+Feeds docs/validation/flume.md, section "Full runs (3 s of flow; ...)": the table of
+full runs.
+
 Usage: flume_table.py LABEL=RUN_DIR ...   (prints a Markdown table)
 Numbers come from each run's summary.json ("flume"), except the surface slope:
 the least-squares slope of the deposit's top (highest grain top per 1 cm

@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Barrier impulse and peak force against contact stiffness, over several packings.
 
+Feeds docs/validation/flume.md, sections "Full runs (3 s of flow; ...)" and "Time step:
+..." (stiffness and packings); tests/app/test_flume_stiffness_run.py runs the same.
+
 Usage: flume_stiffness.py TALUS SCENARIO OUT_DIR --stiffness 1e8,1e9 --seeds 1,2,3
                           [--threads N] [--series-interval S] [--until T1,T2,...]
                           [--set key=value ...]

@@ -2,10 +2,13 @@
 """Vibration convection (Götz 2024 ch. 6) over several variants of one scenario: run, coarse-grain,
 plot, and tabulate the convection strength.
 
+Feeds docs/validation/convection.md, section "Wall friction 0 / 0.25 / 0.5 / 0.75 over
+Götz's 15 periods".
+
 Usage: convection_sweep.py TALUS SCENARIO OUT_DIR LABEL=SET[;SET...] [LABEL=...]
                            [--threads N] [--period P] [--from T0] [--cells NX,NY,NZ] [--vmax V]
 Example (Götz's Fig. 44, wall friction 0 / 0.25 / 0.5 / 0.75):
-  convection_sweep.py build/talus scenarios/vibration_convection.toml runs/conv \
+  convection_sweep.py build/talus scenarios/dem/vibration_convection.toml runs/conv \
       mu0=contact.pairs.0.friction=0 mu025=contact.pairs.0.friction=0.25 \
       mu05=contact.pairs.0.friction=0.5 mu075=contact.pairs.0.friction=0.75
 

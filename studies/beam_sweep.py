@@ -2,6 +2,9 @@
 """The granular beam's modulus over grain modulus, membrane modulus and vacuum, and the fit
 of Götz's collapse law (2024 §5.2, eq. 39):
 
+Feeds docs/validation/membranes-and-jamming.md, section "Granular beam (Götz 2024 §5.2;
+...)": the sweep of the moduli and the fit of the collapse law.
+
     E_b,eff / E_p,eff = e^alpha (E_m,eff / E_p,eff)^beta (p / E_p,eff)^gamma,
 
 E_eff = E / (1 - nu^2) for grains (nu_p = 0.245) and membrane (nu_m = 1/3); the source

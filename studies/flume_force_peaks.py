@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Single-step force peaks of flume runs, window by window, beside the mean force.
 
+Feeds docs/validation/flume.md, section "Full runs (3 s of flow; ...)": the single-step
+force peaks.
+
 Usage: flume_force_peaks.py [--window W] [--from T0] [--to T1] RUN_DIR...
 Reads flume/front.csv (columns <part>_f<c> = mean force over each series interval,
 <part>_f<c>_peak = the largest force of a single step in it) and summary.json. For

@@ -2,6 +2,9 @@
 """The granular beam in 4-point bending over the grains' friction, protocols A and B
 (Götz 2024 §5.3.3, Figs. 27-29, Table 8), and the fit of the source's eq. 46
 
+Feeds docs/validation/membranes-and-jamming.md, section "Granular beam, 4-point bending
+(Götz 2024 §5.3; ...)": the friction sweep and the fit of eq. 46.
+
     Y_b(mu_p) = (Y0 - Yinf) exp(-a mu_p) + Yinf
 
 per protocol. Protocol A: the grains' friction during the vacuum (mu_init) is mu_p;

@@ -2,9 +2,12 @@
 """Plan-view clay blocks over cell sizes and impact speeds (docs/validation.md,
 "Clay block against an obstacle", plan view).
 
+Feeds docs/validation/mpm-clay-block.md, sections "Plan view (2D, ...)" and "A speed
+sweep at ℓ = 2 cm".
+
 Usage: clay_block_plan_sweep.py TALUS OUT --cells 0.01,0.0075 --speeds 0.7,1.0
                                 [--set KEY=VALUE ...] [--eps-c E] [--jobs 2] [--label L]
-Runs scenarios/mpm_clay_block_plan.toml (weak) and ..._strong.toml for every
+Runs scenarios/mpm/mpm_clay_block_plan.toml (weak) and ..._strong.toml for every
 cell size and speed (one thread each, --jobs at a time), reads each run's
 crack metrics with plots/plot_clay_block.py (band = the cell size), prints a
 markdown table and writes OUT/maps.png (OUT/maps_LABEL.png with --label): the mean c/c0 of each run in the
@@ -38,7 +41,7 @@ def run_one(talus, out, clay, cell, speed, sets, label, eps_c):
     d = os.path.join(out, f"{label}{clay}_h{cell}_v{speed}")
     metrics = os.path.join(d, "cracks.json")
     if not os.path.exists(metrics):
-        cmd = [talus, "run", os.path.join(ROOT, "scenarios", CLAYS[clay]), "--out", d,
+        cmd = [talus, "run", os.path.join(ROOT, "scenarios", "mpm", CLAYS[clay]), "--out", d,
                "--force", "--quiet", "--threads", "1", "--set", f"grid.cell_size={cell}",
                "--set", f"bodies.0.velocity=[{speed},0.0]"]
         for s in sets:

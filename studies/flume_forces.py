@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """Wall forces of a flume run averaged over time windows, from its impulse columns.
 
+Feeds docs/validation/flume.md, section "Full runs (3 s of flow; ...)": the windowed
+wall forces.
+
 Usage: flume_forces.py RUN_DIR [WINDOW_S] [T0 T1 STEP]
 The series samples the instantaneous wall force every few milliseconds; a grain
 flow makes it jump from sample to sample. The mean force over a window is the
