@@ -14,6 +14,8 @@ import math
 import os
 import sys
 
+import esri_ascii
+
 NX, NY, CELL = 100, 50, 5.0
 X0, Y0 = 600000.0, 5200000.0
 X_BEND, X_FAN = 150.0, 300.0  # the channel eases from X_BEND to X_FAN
@@ -49,12 +51,7 @@ def solid_fraction(x, y):
 
 
 def write(path, value):
-    with open(path, "w") as f:
-        f.write(f"ncols {NX}\nnrows {NY}\nxllcorner {X0}\nyllcorner {Y0}\ncellsize {CELL}\n")
-        f.write("NODATA_value -9999\n")
-        for j in range(NY):  # first line = northern row
-            y = (NY - j - 0.5) * CELL
-            f.write(" ".join(f"{value((i + 0.5) * CELL, y):.4f}" for i in range(NX)) + "\n")
+    esri_ascii.write(path, value, NX, NY, CELL, X0, Y0, decimals=4)
 
 
 def main():
