@@ -5,6 +5,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/run/loop.hpp"
+#include "talus/run/methods/fv2d.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
 #include "talus/scenario/scenario_runout.hpp"

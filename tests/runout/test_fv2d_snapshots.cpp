@@ -14,6 +14,7 @@
 #include "dam_break.hpp"
 #include "talus/io/raster.hpp"
 #include "talus/run/loop.hpp"
+#include "talus/run/methods/fv2d.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/runout/grid/fv2d_maxima.hpp"
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "talus/run/loop.hpp"
+#include "talus/run/methods/fv2d.hpp"
 #include "talus/run/methods/runout.hpp"
 #include "talus/run/methods/two_phase.hpp"
 #include "talus/scenario/scenario_runout.hpp"

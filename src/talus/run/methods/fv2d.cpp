@@ -1,78 +1,35 @@
 // fv2d (2D depth-averaged runout on a terrain grid) on the run loop.
+#include "talus/run/methods/fv2d.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
-#include "talus/run/methods/runout.hpp"
-#include "talus/runout/checkpoint.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
 #include "talus/scenario/scenario_runout.hpp"
 
 namespace talus::run {
 
 Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
-    : scenario_(std::move(scenario)),
-      solver_(runout::build_fv2d(scenario_)),
-      path_(scenario_),
-      outputs_(std::make_unique<Observer>()),
-      threads_(threads),
-      segments_(threads) {}
+    : GridSimulation(std::move(scenario), threads, &runout::build_fv2d) {}
 
-void Fv2dSimulation::write_to(const std::filesystem::path& out, bool resume) {
-  checkpoint_ = out / "checkpoint.bin";
-  if (resume) {
-    runout::RunoutResults path;
-    const auto count =
-        runout::load_checkpoint(solver_, maxima_, initial_volume_, path, checkpoint_);
-    path_.restore(std::move(path));
-    steps_ = count.steps, last_dt_ = count.last_time_step;
-  }
-  files_ = std::make_unique<runout::Fv2dOutputs>(out, scenario_.grid, resume, time(),
-                                                 scenario_.control.snapshot_interval > 0.0);
-  outputs_ = std::make_unique<FilesWithCheckpoint<runout::Fv2dOutputs, runout::Fv2dSolver>>(
-      *files_, solver_, [this] {
-        runout::save_checkpoint(solver_, maxima_, initial_volume_, path_.results(),
-                                {steps_, last_dt_}, checkpoint_);
-      });
-}
-
-Schedules Fv2dSimulation::schedules() const {
-  return grid_schedules(scenario_.control, !checkpoint_.empty());
-}
-
-// A resumed run's maxima and released volume come from its checkpoint.
 void Fv2dSimulation::start(bool fresh) {
   if (!fresh) return;
   maxima_.reset(solver_.terrain().shape().cells());
   maxima_.observe(solver_);
-  initial_volume_ = solver_.volume();
+  released_ = solver_.volume();
 }
 
-// With several threads the steps run in segments with the whole team or one
-// thread alone, whichever is faster now (core/team_segments.hpp). Every loop
-// of the solver is per cell, or a max, so the bits are the same either way.
 void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_steps) {
-  const double end = end_time();
-  step_in_segments(threads_, segments_, max_steps, [&] {
-    const double t = solver_.state().time;
-    if (stopped_ || t >= target - tolerance || t >= end - tolerance) return false;
-    const double dt =
-        std::min({solver_.stable_time_step(), scenario_.grid.max_time_step, end - t, target - t});
-    solver_.step(dt);
-    last_dt_ = dt;
-    ++steps_;
-    maxima_.observe(solver_);
-    if (path_.active()) path_.observe_step(time(), normal_heights(), solver_.max_speed());
-    stopped_ = scenario_.control.stop_at_rest && solver_.at_rest();
-    if (const double f = scenario_.control.stop_momentum_fraction; f > 0.0 && !stopped_) {
-      const double momentum = solver_.momentum_sum();
-      maxima_.peak_momentum = std::max(maxima_.peak_momentum, momentum);
-      stopped_ = momentum_stop_ = momentum < f * maxima_.peak_momentum;
-    }
-    return true;
+  step_to(target, tolerance, max_steps, [&] {
+    if (scenario_.control.stop_at_rest && solver_.at_rest()) return true;
+    const double f = scenario_.control.stop_momentum_fraction;
+    if (f <= 0.0) return false;
+    const double momentum = solver_.momentum_sum();
+    maxima_.peak_momentum = std::max(maxima_.peak_momentum, momentum);
+    return momentum_stop_ = momentum < f * maxima_.peak_momentum;
   });
 }
 
@@ -80,22 +37,6 @@ std::vector<double> Fv2dSimulation::normal_heights() const {
   std::vector<double> h(solver_.state().h.size());
   for (std::size_t c = 0; c < h.size(); ++c) h[c] = solver_.normal_height(c);
   return h;
-}
-
-void Fv2dSimulation::after_series() {
-  if (path_.active()) path_.sample_front(time(), normal_heights());
-}
-
-void Fv2dSimulation::finish() {
-  if (files_) files_->write_results(solver_, maxima_);
-  if (path_.active())
-    path_.finish(checkpoint_.empty() ? std::filesystem::path() : checkpoint_.parent_path(), time(),
-                 normal_heights(), solver_.at_rest());
-}
-
-double Fv2dSimulation::estimated_steps() const {
-  const double dt = std::min(solver_.stable_time_step(), scenario_.grid.max_time_step);
-  return (end_time() - time()) / dt;
 }
 
 MethodReport Fv2dSimulation::report() const {
@@ -108,7 +49,7 @@ MethodReport Fv2dSimulation::report() const {
     if (m.height[c] > 0.01) affected_area += g.cell_area();
     peak_pressure = std::max(peak_pressure, m.pressure[c]);
   }
-  const double volume = solver_.volume(), v0 = initial_volume_;
+  const double volume = solver_.volume(), v0 = released_;
   MethodReport r;
   r.method = "runout";
   r.model = "fv2d";

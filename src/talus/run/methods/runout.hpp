@@ -1,8 +1,9 @@
 #pragma once
 // The depth-averaged methods on the run loop: DAN (1D, run/methods/dan.cpp)
-// and fv2d (2D on a terrain grid, run/methods/fv2d.cpp). Both may end early
-// once the mass is at rest. Without an output folder they write nothing
-// (calibration, comparisons, tests); with one they write checkpoint.bin at
+// here, and what the grid models (fv2d.hpp, two_phase.hpp, both on
+// grid_simulation.hpp) share besides. All may end early once the mass is at
+// rest. Without an output folder they write nothing (calibration,
+// comparisons, tests); with one they write checkpoint.bin at
 // output.checkpoint_interval (runout/checkpoint.hpp).
 #include <filesystem>
 #include <functional>
@@ -79,51 +80,6 @@ class DanSimulation : public Simulation {
   std::int64_t steps_ = 0;
   double last_dt_ = 0.0;
   bool stopped_ = false;
-};
-
-class Fv2dSimulation : public Simulation {
- public:
-  explicit Fv2dSimulation(runout::RunoutScenario scenario, int threads = 1);
-  // Writes the run's files into `out` (without: none). resume = true first
-  // restores the state from out/checkpoint.bin and continues the files.
-  void write_to(const std::filesystem::path& out, bool resume = false);
-
-  double time() const override { return solver_.state().time; }
-  std::int64_t steps() const override { return steps_; }
-  double end_time() const override { return scenario_.control.duration; }
-  double time_step() const override { return last_dt_ > 0 ? last_dt_ : 1e-2; }
-  double kinetic_energy() const override { return solver_.kinetic_energy(); }
-  // From the stable step of the current state (steps shrink as the flow speeds up).
-  double estimated_steps() const override;
-  Schedules schedules() const override;
-  void start(bool fresh) override;
-  // Steps land on `target`, so the series is sampled at its times exactly.
-  void advance(double target, double tolerance, std::int64_t max_steps) override;
-  bool stopped() const override { return stopped_; }
-  Observer& outputs() override { return *outputs_; }
-  void after_series() override;
-  void finish() override;
-  MethodReport report() const override;
-
-  const runout::Fv2dSolver& solver() const { return solver_; }
-  const runout::Fv2dMaxima& maxima() const { return maxima_; }
-
- private:
-  std::vector<double> normal_heights() const;
-  runout::RunoutScenario scenario_;
-  runout::Fv2dSolver solver_;
-  runout::Fv2dMaxima maxima_;
-  GridPathResults path_;
-  std::unique_ptr<runout::Fv2dOutputs> files_;
-  std::unique_ptr<Observer> outputs_;
-  std::filesystem::path checkpoint_;  // empty: no files
-  int threads_;
-  TeamSegments segments_;  // the team or one thread, segment by segment
-  double initial_volume_ = 0.0;
-  std::int64_t steps_ = 0;
-  double last_dt_ = 0.0;
-  bool stopped_ = false;
-  bool momentum_stop_ = false;  // stopped by run.stop_momentum_fraction
 };
 
 // Writes the resolved scenario into out/scenario.toml and reads it back: a

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "talus/run/forward.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/runout/grid/two_phase_builder.hpp"
 #include "talus/scenario/scenario_runout.hpp"
@@ -14,33 +13,7 @@
 namespace talus::run {
 
 TwoPhaseSimulation::TwoPhaseSimulation(runout::RunoutScenario scenario, int threads)
-    : scenario_(std::move(scenario)),
-      solver_(runout::build_two_phase(scenario_)),
-      path_(scenario_),
-      outputs_(std::make_unique<Observer>()),
-      threads_(threads),
-      segments_(threads) {}
-
-void TwoPhaseSimulation::write_to(const std::filesystem::path& out, bool resume) {
-  checkpoint_ = out / "checkpoint.bin";
-  if (resume) {
-    runout::RunoutResults path;
-    const auto count = runout::load_checkpoint(solver_, maxima_, released_, path, checkpoint_);
-    path_.restore(std::move(path));
-    steps_ = count.steps, last_dt_ = count.last_time_step;
-  }
-  files_ = std::make_unique<runout::TwoPhaseOutputs>(out, scenario_.grid, resume, time(),
-                                                     scenario_.control.snapshot_interval > 0.0);
-  outputs_ = std::make_unique<FilesWithCheckpoint<runout::TwoPhaseOutputs, runout::TwoPhaseSolver>>(
-      *files_, solver_, [this] {
-        runout::save_checkpoint(solver_, maxima_, released_, path_.results(), {steps_, last_dt_},
-                                checkpoint_);
-      });
-}
-
-Schedules TwoPhaseSimulation::schedules() const {
-  return grid_schedules(scenario_.control, !checkpoint_.empty());
-}
+    : GridSimulation(std::move(scenario), threads, &runout::build_two_phase) {}
 
 void TwoPhaseSimulation::start(bool fresh) {
   if (!fresh) return;
@@ -49,24 +22,12 @@ void TwoPhaseSimulation::start(bool fresh) {
   released_ = {solver_.solid_volume(), solver_.fluid_volume()};
 }
 
-// In segments with the team or one thread, as fv2d: the same bits either way.
 void TwoPhaseSimulation::advance(double target, double tolerance, std::int64_t max_steps) {
-  const double end = end_time();
-  step_in_segments(threads_, segments_, max_steps, [&] {
-    const double t = solver_.state().time;
-    if (stopped_ || t >= target - tolerance || t >= end - tolerance) return false;
-    const double dt =
-        std::min({solver_.stable_time_step(), scenario_.grid.max_time_step, end - t, target - t});
-    solver_.step(dt);
-    last_dt_ = dt;
-    ++steps_;
-    maxima_.observe(solver_);
-    if (path_.active()) path_.observe_step(time(), normal_heights(), solver_.max_speed());
+  step_to(target, tolerance, max_steps, [&] {
     // Rain keeps adding water: such a run is never at rest.
     const auto& p = solver_.params();
     const bool raining = p.rainfall > 0.0 || !p.rainfall_map.empty();
-    stopped_ = scenario_.control.stop_at_rest && !raining && solver_.at_rest();
-    return true;
+    return scenario_.control.stop_at_rest && !raining && solver_.at_rest();
   });
 }
 
@@ -76,22 +37,6 @@ std::vector<double> TwoPhaseSimulation::normal_heights() const {
     h[c] = solver_.normal_height(c, runout::Phase::Solid) +
            solver_.normal_height(c, runout::Phase::Fluid);
   return h;
-}
-
-void TwoPhaseSimulation::after_series() {
-  if (path_.active()) path_.sample_front(time(), normal_heights());
-}
-
-void TwoPhaseSimulation::finish() {
-  if (files_) files_->write_results(solver_, maxima_);
-  if (path_.active())
-    path_.finish(checkpoint_.empty() ? std::filesystem::path() : checkpoint_.parent_path(), time(),
-                 normal_heights(), solver_.at_rest());
-}
-
-double TwoPhaseSimulation::estimated_steps() const {
-  const double dt = std::min(solver_.stable_time_step(), scenario_.grid.max_time_step);
-  return (end_time() - time()) / dt;
 }
 
 MethodReport TwoPhaseSimulation::report() const {
