@@ -44,6 +44,13 @@ struct Plane {
       "box", [](int i, int j) { return i >= 3 && i < 9 && j >= 5 && j < 11 ? 3.0 : 0.0; });
 };
 
+// A fresh run through the run loop to its end, writing no files.
+void run_to_end(Simulation& sim) {
+  RunLoop loop(sim, {});
+  loop.start(true);
+  loop.run();
+}
+
 runout::RunoutScenario parse(const std::string& text) {
   return io::parse_runout_scenario(io::load_scenario_text(text, testing::TempDir() + "s.toml"));
 }
@@ -67,11 +74,7 @@ TEST(TwoPhaseRun, WithoutFluidTheMethodRunsFv2dsGranularModel) {
                          plane.release + "\"\nsolid_fraction = 1\n");
   Fv2dSimulation a(fv2d);
   TwoPhaseSimulation b(two);
-  for (Simulation* s : {static_cast<Simulation*>(&a), static_cast<Simulation*>(&b)}) {
-    RunLoop loop(*s, {});
-    loop.start(true);
-    loop.run();
-  }
+  run_to_end(a), run_to_end(b);
   EXPECT_EQ(a.steps(), b.steps());
   const auto& h = a.solver().state().h;
   const auto& hs = b.solver().state().hs;
@@ -123,11 +126,7 @@ TEST(TwoPhaseRun, WithoutFluidOnCurvedTerrainTheMethodRunsFv2ds) {
                   "grain_diameter = 0.001\n[fluid]\ndensity = 0\nmanning = 0.05\n");
   Fv2dSimulation a(fv2d);
   TwoPhaseSimulation b(two);
-  for (Simulation* s : {static_cast<Simulation*>(&a), static_cast<Simulation*>(&b)}) {
-    RunLoop loop(*s, {});
-    loop.start(true);
-    loop.run();
-  }
+  run_to_end(a), run_to_end(b);
   const auto& h = a.solver().state().h;
   const auto& hs = b.solver().state().hs;
   double worst = 0.0;
@@ -141,9 +140,7 @@ TEST(TwoPhaseRun, WithoutFluidOnCurvedTerrainTheMethodRunsFv2ds) {
   // Without the term the two differ: the check is not vacuous.
   two.two_phase.params.curvature = false;
   TwoPhaseSimulation c(two);
-  RunLoop loop(c, {});
-  loop.start(true);
-  loop.run();
+  run_to_end(c);
   double apart = 0.0;
   for (std::size_t k = 0; k < h.size(); ++k)
     apart = std::max(apart, std::abs(h[k] - c.solver().state().hs[k]));
@@ -156,9 +153,7 @@ TEST(TwoPhaseRun, BundledDebrisFlowKeepsEachPhasesVolume) {
       io::load_scenario_file(kScenarios + "two_phase_debris_valley.toml", {}));
   sc.control.duration = 30.0;
   TwoPhaseSimulation sim(sc);
-  RunLoop loop(sim, {});
-  loop.start(true);
-  loop.run();
+  run_to_end(sim);
   const auto m = sim.report().metrics;
   // Mass of each phase exact up to summation round-off (fluxes cancel pairwise).
   EXPECT_LT(m["solid_volume_error_relative"].get<double>(), 1e-12) << m.dump();
@@ -189,9 +184,7 @@ TEST(TwoPhaseRun, RainAndInfiltrationRastersAddAndTakeTheirRates) {
                   plane.release + "\"\nsolid_fraction = 0.6\n");
   sc.control.duration = 2.0;
   TwoPhaseSimulation sim(sc);
-  RunLoop loop(sim, {});
-  loop.start(true);
-  loop.run();
+  run_to_end(sim);
   const auto m = sim.report().metrics;
   // 30 x 8 cells of 4 m^2 at 1e-5 m/s for 2 s.
   EXPECT_NEAR(m["rained_volume_m3"].get<double>(), 240 * 4.0 * 1e-5 * 2.0, 1e-15);

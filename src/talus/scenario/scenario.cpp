@@ -114,11 +114,6 @@ void check_densities(const dem::DemScenario& s, std::vector<TomlReader>& materia
   }
 }
 
-TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty) {
-  if (auto table = root.optional_table(key)) return *table;
-  return TomlReader(empty, root.file(), std::string(key), std::string(key));
-}
-
 toml::table parse_toml(std::string_view text, const std::string& path) {
   try {
     return toml::parse(text, path);
@@ -249,7 +244,7 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   s.run = read_run(run, ctx);
 
   const toml::table empty;
-  TomlReader contact = table_or_empty(root, "contact", empty);
+  TomlReader contact = detail::table_or_empty(root, "contact", empty);
   s.contact = read_contact(contact);
 
   std::vector<TomlReader> material_readers = root.tables("materials");
@@ -305,7 +300,7 @@ dem::DemScenario parse_dem_scenario(const ScenarioFile& file) {
   if (auto tri = root.optional_table("triaxial")) detail::read_triaxial(*tri, s);
   if (auto hs = root.optional_table("hollow_sphere")) detail::read_hollow_sphere(*hs, s);
 
-  TomlReader output = table_or_empty(root, "output", empty);
+  TomlReader output = detail::table_or_empty(root, "output", empty);
   s.output = read_output(output);
   if (auto gr = root.optional_table("gripper")) detail::read_gripper(*gr, s, ctx);
   if (auto bm = root.optional_table("beam")) detail::read_beam(*bm, s);

@@ -115,6 +115,9 @@ void read_box(TomlReader& r, std::string_view key, const DemContext& ctx, Vec3& 
 // A file name, relative to the folder of the file it is written in (the
 // scenario or a base it extends) unless absolute; must exist.
 std::string required_file(TomlReader& r, std::string_view key, const DemContext& ctx);
+// The optional table `key` of root, or an empty one in its place (its keys'
+// defaults then apply; `empty` must outlive the reader).
+TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty);
 // Fails unless name is one of the [[materials]].
 void check_material(const TomlReader& r, std::string_view key, const std::string& name,
                     const DemContext& ctx);

@@ -150,4 +150,9 @@ void check_material(const TomlReader& r, std::string_view key, const std::string
 
 Vec3 up(const DemContext& ctx) { return ctx.dimension == 2 ? Vec3::UnitY() : Vec3::UnitZ(); }
 
+TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty) {
+  if (auto table = root.optional_table(key)) return *table;
+  return TomlReader(empty, root.file(), std::string(key), std::string(key));
+}
+
 }  // namespace talus::io::detail

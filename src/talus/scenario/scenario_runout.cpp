@@ -251,11 +251,6 @@ void read_output(TomlReader& r, runout::RunoutScenario& s) {
   r.finish();
 }
 
-TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty) {
-  if (auto table = root.optional_table(key)) return *table;
-  return TomlReader(empty, root.file(), std::string(key), std::string(key));
-}
-
 double deg(double rad) { return rad * 180.0 / M_PI; }
 
 }  // namespace
@@ -359,7 +354,7 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
     TomlReader material = root.required_table("material");
     read_material(material, s.params);
   }
-  TomlReader pressure = table_or_empty(root, "earth_pressure", empty);
+  TomlReader pressure = detail::table_or_empty(root, "earth_pressure", empty);
   read_earth_pressure(pressure, s.params, s.model);
   if (two_phase) {
     // The solid's angles are [solid]'s; the law and k are [earth_pressure]'s.
@@ -367,7 +362,7 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
     e.mode = s.params.pressure.mode, e.constant = s.params.pressure.constant;
   }
   if (!grid) {
-    TomlReader smoothing = table_or_empty(root, "smoothing", empty);
+    TomlReader smoothing = detail::table_or_empty(root, "smoothing", empty);
     read_smoothing(smoothing, s.params.smoothing);
   }
   TomlReader release = root.required_table("release");
@@ -375,7 +370,7 @@ runout::RunoutScenario parse_runout_scenario(const ScenarioFile& file) {
     read_grid_release(release, ctx, s);
   else
     read_release(release, ctx, s);
-  TomlReader output = table_or_empty(root, "output", empty);
+  TomlReader output = detail::table_or_empty(root, "output", empty);
   read_output(output, s);
   if (s.grid.on_path) {
     try {

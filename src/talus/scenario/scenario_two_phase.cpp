@@ -87,11 +87,6 @@ void read_hydrology(TomlReader& r, const detail::DemContext& ctx, runout::Runout
   r.finish();
 }
 
-TomlReader table_or_empty(TomlReader& root, std::string_view key, const toml::table& empty) {
-  if (auto table = root.optional_table(key)) return *table;
-  return TomlReader(empty, root.file(), std::string(key), std::string(key));
-}
-
 }  // namespace
 
 void read_tables(TomlReader& root, const detail::DemContext& ctx, runout::RunoutScenario& s) {
@@ -101,9 +96,9 @@ void read_tables(TomlReader& root, const detail::DemContext& ctx, runout::Runout
   TomlReader fluid = root.required_table("fluid");
   read_fluid(fluid, p);
   const toml::table empty;
-  TomlReader drag = table_or_empty(root, "drag", empty);
+  TomlReader drag = detail::table_or_empty(root, "drag", empty);
   read_drag(drag, p);
-  TomlReader hydrology = table_or_empty(root, "hydrology", empty);
+  TomlReader hydrology = detail::table_or_empty(root, "hydrology", empty);
   read_hydrology(hydrology, ctx, s);
 }
 
