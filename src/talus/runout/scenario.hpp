@@ -75,7 +75,6 @@ struct GridSpec {
   double cell_size = 0.0;  // m along x
   std::size_t rows = 3;
   double front_depth = 1e-3;   // m
-  double x_begin = 0.0;        // x of the grid's west edge in the path's plane
   double dry_depth = 1e-6;     // m
   double max_time_step = 0.1;  // s
 };

@@ -48,7 +48,6 @@ void grid_from_path(RunoutScenario& sc) {
   g.elevation = e.elevation;
   g.release_depth = e.release;
   g.inside.clear();
-  g.x_begin = e.x_begin;
   g.x_west = e.x_begin, g.y_north = row_width * static_cast<double>(g.rows);
   g.boundary = GridBoundary::Wall;
 }
@@ -63,7 +62,7 @@ double PathGridTracker::front_s(const std::vector<double>& depth) const {
   std::size_t reached = 0;  // columns up to the front's downstream face
   for (std::size_t i = 0; i < grid_.shape.nx; ++i)
     if (depth[grid_.shape.index(i, 0)] > grid_.front_depth) reached = i + 1;
-  const double x = grid_.x_begin + static_cast<double>(reached) * grid_.shape.dx;
+  const double x = grid_.x_west + static_cast<double>(reached) * grid_.shape.dx;
   return path_.s_at_x(x);
 }
 
@@ -89,7 +88,7 @@ const RunoutResults& PathGridTracker::finish(double time, const std::vector<doub
   // The deposit: one point per column of the first row, at its centre.
   r_.deposit.clear();
   for (std::size_t i = 0; i < grid_.shape.nx; ++i) {
-    const double x = grid_.x_begin + (static_cast<double>(i) + 0.5) * grid_.shape.dx;
+    const double x = grid_.x_west + (static_cast<double>(i) + 0.5) * grid_.shape.dx;
     const double s = path_.s_at_x(x), a = path_.angle(s), h = depth[grid_.shape.index(i, 0)];
     const Vec2 bed = path_.point(s), top = bed + h * Vec2(-std::sin(a), std::cos(a));
     r_.deposit.push_back({s, bed.x(), bed.y(), h, top.x(), top.y()});
