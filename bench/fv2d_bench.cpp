@@ -3,13 +3,18 @@
 // the upper half, 20 steps after 5 warm-up steps, for 1 and 2 threads; fv2d
 // (single phase, Voellmy) and the two-phase solver (the same release as 60 %
 // solid, 40 % fluid) side by side in one run.
-// Usage: bench_fv2d [n=1000] [steps=20]
+// Usage: bench_fv2d [n=1000] [steps=20] [threads (default: 1, then 2)]
+//                   [both | fv2d | two-phase (default: both)]
+// (the last two to profile one solver on one team).
 #include <omp.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "talus/runout/grid/fv2d.hpp"
 #include "talus/runout/grid/two_phase.hpp"
@@ -19,6 +24,9 @@ using namespace talus::runout;
 int main(int argc, char** argv) {
   const std::size_t n = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 1000;
   const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
+  std::vector<int> teams = {1, 2};
+  if (argc > 3) teams = {std::atoi(argv[3])};
+  const std::string which = argc > 4 ? argv[4] : "both";
   GridShape g{n, n, 1.0, 1.0};
   std::vector<double> bed(g.cells()), depth(g.cells());
   for (std::size_t j = 0; j < n; ++j)
@@ -46,12 +54,18 @@ int main(int argc, char** argv) {
     for (int k = 0; k < steps; ++k) solver.step(solver.stable_time_step());
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
-  for (int threads : {1, 2}) {
+  for (int threads : teams) {
     omp_set_num_threads(threads);
-    Fv2dSolver single(terrain, p, depth);
-    TwoPhaseSolver two(terrain, tp, solid, fluid);
-    const double w1 = timed(single), w2 = timed(two);
-    for (auto [name, wall] : {std::pair{"fv2d", w1}, std::pair{"two-phase", w2}})
+    std::vector<std::pair<const char*, double>> walls;
+    if (which != "two-phase") {
+      Fv2dSolver single(terrain, p, depth);
+      walls.emplace_back("fv2d", timed(single));
+    }
+    if (which != "fv2d") {
+      TwoPhaseSolver two(terrain, tp, solid, fluid);
+      walls.emplace_back("two-phase", timed(two));
+    }
+    for (auto [name, wall] : walls)
       std::printf("%-9s threads %d  grid %zu x %zu  steps %d  wall %.3f s  cell-updates/s %.3e\n",
                   name, threads, n, n, steps, wall, static_cast<double>(g.cells()) * steps / wall);
   }

@@ -78,7 +78,7 @@ TwoPhaseSolver::TwoPhaseSolver(Terrain terrain, TwoPhaseParams params,
   g_solid_.resize(n), g_bed_solid_.resize(n);
   set_state(s);
   stage_ = s_, stage2_ = s_;
-  for (auto* a : {&us_, &vs_, &uf_, &vf_, &eta_}) a->assign(n, 0.0);
+  for (auto* a : {&us_, &vs_, &uf_, &vf_, &eta_, &mixture_}) a->assign(n, 0.0);
   for (int k = 0; k < 7; ++k) sx_[k].assign(n, 0.0), sy_[k].assign(n, 0.0);
   const auto& g = terrain_.shape();
   const std::size_t nfx = (g.nx + 1) * g.ny, nfy = g.nx * (g.ny + 1);
@@ -286,6 +286,7 @@ void TwoPhaseSolver::reconstruct(const TwoPhaseState& in) {
     us_[c] = hs > dry ? in.hsu[c] / hs : 0.0, vs_[c] = hs > dry ? in.hsv[c] / hs : 0.0;
     uf_[c] = hf > dry ? in.hfu[c] / hf : 0.0, vf_[c] = hf > dry ? in.hfv[c] / hf : 0.0;
     eta_[c] = dom[c] ? b[c] + hs + hf : 0.0;
+    mixture_[c] = hs + hf;
   }
   if (p_.order == 1) {  // no slopes: the sides are the cell's values
     side_depths(in);
@@ -385,7 +386,11 @@ void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
       const Index k = j * (nx + 1) + f;
       const bool has_l = f > 0 && dom[j * nx + f - 1], has_r = f < nx && dom[j * nx + f];
       FaceFlux flux;
-      if (has_l || has_r) {
+      // Between two empty cells (or an empty one and the edge) nothing moves:
+      // an empty cell's sides are empty too (its limited slopes are 0).
+      const bool empty =
+          (!has_l || mixture_[j * nx + f - 1] == 0.0) && (!has_r || mixture_[j * nx + f] == 0.0);
+      if ((has_l || has_r) && !empty) {
         Side L{}, R{};
         if (has_l) L = side(j * nx + f - 1, 1, sx_, false);
         if (has_r) R = side(j * nx + f, 0, sx_, false);
@@ -403,7 +408,9 @@ void TwoPhaseSolver::face_fluxes(const TwoPhaseState& in) {
       const Index k = f * nx + i;
       const bool has_l = f > 0 && dom[(f - 1) * nx + i], has_r = f < ny && dom[f * nx + i];
       FaceFlux flux;
-      if (has_l || has_r) {
+      const bool empty =
+          (!has_l || mixture_[(f - 1) * nx + i] == 0.0) && (!has_r || mixture_[f * nx + i] == 0.0);
+      if ((has_l || has_r) && !empty) {
         Side L{}, R{};
         if (has_l) L = side((f - 1) * nx + i, 1, sy_, true);
         if (has_r) R = side(f * nx + i, 0, sy_, true);
@@ -596,6 +603,20 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     }
   }
   limit_outflow(in, dt);
+  // Whether no face of cell (i, j) carries anything (the fields' fluxes; the
+  // lateral stress's are not looked at, so with it no cell takes this path).
+  const bool viscous = lateral_viscosity();
+  auto no_face_carries = [&](Index i, Index j) {
+    if (viscous) return false;
+    const Index w = j * (nx + 1) + i, s = j * nx + i;
+    const auto quiet_face = [](const std::vector<double>* f, Index k) {
+      bool quiet = true;
+      for (int m = 0; m < kFields; ++m) quiet = quiet && f[m][k] == 0.0;
+      return quiet;
+    };
+    return quiet_face(fx_, w) && quiet_face(fx_, w + 1) && quiet_face(fy_, s) &&
+           quiet_face(fy_, s + nx);
+  };
   // Pass 2: the update. No solid crosses a face between two quiet cells.
   bool finite = true;
 #pragma omp parallel for schedule(static) reduction(&& : finite)
@@ -603,6 +624,11 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       if (!dom[c]) continue;
+      // An empty cell none of whose faces carries anything stays empty.
+      if (mixture_[c] == 0.0 && no_face_carries(i, j)) {
+        out.hs[c] = out.hsu[c] = out.hsv[c] = out.hf[c] = out.hfu[c] = out.hfv[c] = 0.0;
+        continue;
+      }
       bool open[4];
       solid_faces_open(held_, i, j, nx, ny, open);
       double d[kFields], carried[kFields];
@@ -618,7 +644,7 @@ double TwoPhaseSolver::euler_stage(const TwoPhaseState& in, TwoPhaseState& out, 
       if (!solid_wet) ms[0] = ms[1] = 0.0;
       if (!fluid_wet) mf[0] = mf[1] = 0.0;
       const double as = h > dry ? hs / h : 0.0;
-      const double eta = viscosity(as);
+      const double eta = fluid_wet ? viscosity(as) : 0.0;  // used only where there is fluid
       Column col{hs, hf, {ms[0], ms[1]}, {mf[0], mf[1]}};
       ColumnSources src;
       src.rho_s = rho_s, src.rho_f = rho_f, src.exponent = J;

@@ -192,6 +192,7 @@ class TwoPhaseSolver {
   // surface and the four velocities, face fluxes with the hydrostatic
   // corrections of each side, the solid's held flags.
   std::vector<double> us_, vs_, uf_, vf_, eta_;
+  std::vector<double> mixture_;  // H_s + H_f of the stage's input
   std::vector<double> sx_[7], sy_[7];
   std::vector<double> fx_[kFields], fy_[kFields];
   std::vector<double> cxl_, cxr_, cyl_, cyr_;  // the fluid's normal momentum
