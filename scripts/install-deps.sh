@@ -5,7 +5,8 @@
 set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libgdal-dev voro++-dev
-      python3 python3-vtk9 python3-matplotlib python3-numpy)
+      python3 python3-vtk9 python3-matplotlib python3-numpy
+      python3-dev pybind11-dev python3-pytest python3-pandas python3-scipy)
 # The peer benchmarks need LIGGGHTS (bench/peer.sh) and Gerris (bench/gerris_dam_break.py).
 [ "${TALUS_WITH_PEERS:-0}" = 1 ] && pkgs+=(liggghts gerris)
 # The scenario reader's fuzzer needs clang's libFuzzer and OpenMP; only scripts/fuzz.sh asks for it.

@@ -15,6 +15,7 @@
 #include "talus/run/experiment.hpp"
 #include "talus/run/method.hpp"
 #include "talus/run/run_log.hpp"
+#include "talus/run/session.hpp"
 #include "talus/run/step_limit.hpp"
 #include "talus/run/summary.hpp"
 #include "talus/scenario/compare_file.hpp"
@@ -84,101 +85,148 @@ io::ScenarioFile load(const RunRequest& req, fs::path& out) {
 
 }  // namespace
 
-RunResult execute(const RunRequest& req) {
+RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resume.empty()) {
   const auto t0 = std::chrono::steady_clock::now();
-  const bool resume = !req.resume.empty();
-  fs::path out;
-  const auto file = load(req, out);
+  const auto file = load(req, out_);
   if (file.method == "compare")
     throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
                      "`");
   const Method& method = method_for(file);
-  if (resume && !method.checkpoints)
-    throw InputError(out.string() + ": " + method.name + " runs write no checkpoints to resume");
-  RunContext ctx{out, req.threads, resume};
-  // Held until the run is over: the lock, then the record of talus's files.
-  std::optional<OutputFolder> folder;
-  if (resume)
-    folder.emplace(OutputFolder::reopen(out));
+  if (resume_ && !method.checkpoints)
+    throw InputError(out_.string() + ": " + method.name + " runs write no checkpoints to resume");
+  ctx_ = RunContext{out_, req.threads, resume_};
+  // Held until the session ends: the lock, then the record of talus's files.
+  if (resume_)
+    folder_.emplace(OutputFolder::reopen(out_));
   else
-    ctx.prepare = [&] { folder.emplace(OutputFolder::claim(out, req.force)); };
-  std::unique_ptr<Simulation> sim;
+    ctx_.prepare = [this] { folder_.emplace(OutputFolder::claim(out_, request_.force)); };
   try {
-    sim = method.create(file, ctx);
-    check_step_count(file.path, sim->estimated_steps(), sim->end_time() - sim->time(),
+    sim_ = method.create(file, ctx_);
+    check_step_count(file.path, sim_->estimated_steps(), sim_->end_time() - sim_->time(),
                      req.allow_long_run);
   } catch (const InputError&) {
     // Refused while building: a fresh run's folder goes again.
-    if (!resume && folder) folder->discard();
+    if (!resume_ && folder_) folder_->discard();
     throw;
   }
-  if (!resume && folder) folder->scenario_written();
-  auto experiments = attach_experiments(*sim, ctx);
+  if (!resume_ && folder_) folder_->scenario_written();
+  experiments_ = attach_experiments(*sim_, ctx_);
   std::vector<Observer*> observers;
-  for (auto& e : experiments) observers.push_back(e.get());
-  RunLoop loop(*sim, observers);
-  RunLog log(out, req.log_seconds, req.log_to_stderr);
-  const double steps = sim->estimated_steps();
-  log.started(fmt::format("talus {} {} {} ({}, {} thread{}{})", version(),
-                          resume ? "resumed" : "started", file.path, method.name, req.threads,
-                          req.threads == 1 ? "" : "s",
-                          steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
-  loop.progress_seconds = std::min(loop.progress_seconds, req.log_seconds);
-  SummaryInput summary;
-  std::chrono::steady_clock::time_point loop_t0;  // set as the loop starts
-  loop.progress = [&](const Progress& p) {
-    if (summary.estimated_wall_seconds < 0.0 && p.steps_per_s > 0.0 && p.time_step > 0.0) {
+  for (auto& e : experiments_) observers.push_back(e.get());
+  loop_ = std::make_unique<RunLoop>(*sim_, observers);
+  log_ = std::make_unique<RunLog>(out_, req.log_seconds, req.log_to_stderr);
+  const double steps = sim_->estimated_steps();
+  log_->started(fmt::format("talus {} {} {} ({}, {} thread{}{})", version(),
+                            resume_ ? "resumed" : "started", file.path, method.name, req.threads,
+                            req.threads == 1 ? "" : "s",
+                            steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
+  loop_->progress_seconds = std::min(loop_->progress_seconds, req.log_seconds);
+  loop_->progress = [this](const Progress& p) {
+    if (summary_.estimated_wall_seconds < 0.0 && p.steps_per_s > 0.0 && p.time_step > 0.0) {
       const double left = (p.end - p.time) / p.time_step / p.steps_per_s;
-      summary.estimated_wall_seconds = seconds_since(loop_t0) + left;
-      log.note(fmt::format("estimated wall time: about {:.0f} s ({:.0f} s left at {:.0f} steps/s)",
-                           summary.estimated_wall_seconds, left, p.steps_per_s));
+      summary_.estimated_wall_seconds = seconds_since(loop_t0_) + left;
+      log_->note(
+          fmt::format("estimated wall time: about {:.0f} s ({:.0f} s left at {:.0f} steps/s)",
+                      summary_.estimated_wall_seconds, left, p.steps_per_s));
     }
-    log.progress(p);
-    if (req.progress) req.progress(p);
+    log_->progress(p);
+    if (request_.progress) request_.progress(p);
   };
-  summary.setup_seconds = seconds_since(t0);
-  if (steps >= 0.0) summary.estimated_steps = steps;
-  const std::int64_t first_step = sim->steps();
-  RunResult result;
-  result.out = out;
-  auto fill = [&](const char* status, const std::string& error) {
-    summary.status = status;
-    summary.error = error;
-    summary.report = sim->report();
-    summary.steps = sim->steps() - first_step;
-    summary.simulated_time = sim->time();
-    summary.loop_seconds = loop.stats().wall_seconds;
-  };
+  summary_.setup_seconds = seconds_since(t0);
+  if (steps >= 0.0) summary_.estimated_steps = steps;
+  first_step_ = sim_->steps();
+}
+
+RunSession::~RunSession() {
+  if (finished_ || !sim_) return;
   try {
-    loop_t0 = std::chrono::steady_clock::now();
-    loop.start(!resume);
-    loop.run();
-    for (auto& e : experiments) summary.experiments[e->name()] = e->finish();
-    fill("completed", "");
-    write_summary(out, summary);
-  } catch (const std::exception& e) {
-    // Whatever stopped it (a RunError, a full disk): a summary that says so.
-    fill("failed", e.what());
-    try {
-      write_summary(out, summary);
-    } catch (const std::exception&) {
-      // On a full disk it may not fit either: the failure's own message is what counts.
+    finish();
+  } catch (const std::exception&) {
+    // Nothing to report to: the caller has gone.
+  }
+}
+
+void RunSession::fill(const char* status, const std::string& error) {
+  summary_.status = status;
+  summary_.error = error;
+  summary_.report = sim_->report();
+  summary_.steps = sim_->steps() - first_step_;
+  summary_.simulated_time = sim_->time();
+  summary_.loop_seconds = loop_->stats().wall_seconds;
+}
+
+void RunSession::fail(const std::exception& e) {
+  // Whatever stopped it (a RunError, a full disk): a summary that says so.
+  finished_ = true;
+  fill("failed", e.what());
+  try {
+    write_summary(out_, summary_);
+  } catch (const std::exception&) {
+    // On a full disk it may not fit either: the failure's own message is what counts.
+  }
+  log_->ended(fmt::format("failed at t = {:.6g} s: {}", sim_->time(), e.what()));
+}
+
+RunStats RunSession::advance(double until, std::int64_t steps) {
+  if (finished_) throw InputError(out_.string() + ": this run is finished; it cannot be advanced");
+  try {
+    if (!started_) {
+      started_ = true;
+      loop_t0_ = std::chrono::steady_clock::now();
+      loop_->start(!resume_);
     }
-    log.ended(fmt::format("failed at t = {:.6g} s: {}", sim->time(), e.what()));
+    return loop_->advance(std::min(until, sim_->end_time()), steps);
+  } catch (const std::exception& e) {
+    fail(e);
     throw;
   }
-  log.ended(fmt::format("completed: {} steps to t = {:.6g} s in {:.1f} s of wall time",
-                        summary.steps, summary.simulated_time, summary.loop_seconds));
-  result.stats = loop.stats();
-  if (!summary.report.headline.empty()) result.headline.push_back(summary.report.headline);
-  for (auto& e : experiments) {
-    const auto line = e->headline(summary.experiments[e->name()]);
-    if (!line.empty()) result.headline.push_back(line);
+}
+
+RunStats RunSession::run_to_end() {
+  RunStats before = loop_->stats();
+  advance(sim_->end_time(), -1);
+  RunStats now = loop_->stats();
+  return {now.steps - before.steps, now.wall_seconds - before.wall_seconds, now.stopped_early};
+}
+
+RunResult RunSession::finish() {
+  if (finished_) throw InputError(out_.string() + ": this run is already finished");
+  const bool done = started_ && loop_->done();
+  try {
+    if (done)
+      for (auto& e : experiments_) summary_.experiments[e->name()] = e->finish();
+    fill(done ? "completed" : "stopped", "");
+    write_summary(out_, summary_);
+  } catch (const std::exception& e) {
+    fail(e);
+    throw;
   }
-  for (const auto& text : result.headline) log.headline(text);
-  result.warnings = summary.report.warnings;
-  for (const auto& text : result.warnings) log.headline("warning: " + text);
+  finished_ = true;
+  if (done)
+    log_->ended(fmt::format("completed: {} steps to t = {:.6g} s in {:.1f} s of wall time",
+                            summary_.steps, summary_.simulated_time, summary_.loop_seconds));
+  else
+    log_->ended(fmt::format("stopped by the caller at t = {:.6g} s after {} steps",
+                            summary_.simulated_time, summary_.steps));
+  RunResult result;
+  result.out = out_;
+  result.stats = loop_->stats();
+  if (!summary_.report.headline.empty()) result.headline.push_back(summary_.report.headline);
+  if (done)
+    for (auto& e : experiments_) {
+      const auto line = e->headline(summary_.experiments[e->name()]);
+      if (!line.empty()) result.headline.push_back(line);
+    }
+  for (const auto& text : result.headline) log_->headline(text);
+  result.warnings = summary_.report.warnings;
+  for (const auto& text : result.warnings) log_->headline("warning: " + text);
   return result;
+}
+
+RunResult execute(const RunRequest& req) {
+  RunSession session(req);
+  session.run_to_end();
+  return session.finish();
 }
 
 std::string validate(const std::string& path, const std::vector<std::string>& sets,

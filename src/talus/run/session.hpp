@@ -1,0 +1,70 @@
+#pragma once
+// A run in pieces: `talus run` built, advanced and finished by its caller.
+// The constructor does everything before the first step (InputError before
+// anything runs, the run folder claimed, scenario.toml written); advance()
+// steps the one run loop by steps or to a time (outputs fall on the same
+// times however it is driven); finish() writes summary.json. execute()
+// (run.hpp) is a session run to its end; the Python API steps one.
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "talus/run/experiment.hpp"
+#include "talus/run/loop.hpp"
+#include "talus/run/method.hpp"
+#include "talus/run/output_folder.hpp"
+#include "talus/run/run.hpp"
+#include "talus/run/run_log.hpp"
+#include "talus/run/summary.hpp"
+
+namespace talus::run {
+
+class RunSession {
+ public:
+  explicit RunSession(const RunRequest& request);
+  // Unfinished (the caller stopped early, or an error left it): summary.json
+  // says "stopped" at the time reached. Never throws.
+  ~RunSession();
+  RunSession(const RunSession&) = delete;
+  RunSession& operator=(const RunSession&) = delete;
+
+  // Up to `steps` steps (< 0: no limit), not past `until` (simulated
+  // seconds; the run's end when later). A RunError (or any failure) writes
+  // summary.json as "failed" and is rethrown; the session is then finished.
+  RunStats advance(double until, std::int64_t steps);
+  RunStats run_to_end();
+  // The run reached its end time or the method stopped (at rest).
+  bool done() const { return loop_->done(); }
+  bool finished() const { return finished_; }
+  // Writes summary.json: "completed" when done(), otherwise "stopped" (the
+  // caller ended it early); returns the headline and warnings.
+  RunResult finish();
+
+  Simulation& simulation() { return *sim_; }
+  const Simulation& simulation() const { return *sim_; }
+  const std::filesystem::path& out() const { return out_; }
+  const RunStats& stats() const { return loop_->stats(); }
+
+ private:
+  void fill(const char* status, const std::string& error);
+  void fail(const std::exception& e);
+
+  RunRequest request_;
+  std::filesystem::path out_;
+  bool resume_ = false;
+  RunContext ctx_;
+  std::optional<OutputFolder> folder_;
+  std::unique_ptr<Simulation> sim_;
+  std::vector<std::unique_ptr<Experiment>> experiments_;
+  std::unique_ptr<RunLoop> loop_;
+  std::unique_ptr<RunLog> log_;
+  SummaryInput summary_;
+  std::chrono::steady_clock::time_point loop_t0_;
+  std::int64_t first_step_ = 0;
+  bool started_ = false, finished_ = false;
+};
+
+}  // namespace talus::run
