@@ -5,8 +5,9 @@ BUILD_SAN   ?= build-sanitize
 JOBS        ?= $(shell nproc)
 MAKEFLAGS   += --no-print-directory
 CMAKE_FLAGS ?=
+PREFIX      ?= /usr/local
 
-.PHONY: deps build demo test test-sanitize bench format clean
+.PHONY: deps build demo test test-sanitize bench format clean install
 
 deps:
 	@bash scripts/install-deps.sh
@@ -31,6 +32,10 @@ bench: build
 	@TALUS_WITH_PEERS=1 bash scripts/install-deps.sh
 	@bash bench/peer.sh
 	@bash bench/flume.sh
+
+# The binary into PREFIX/bin, the Python package into PREFIX/lib/python3/dist-packages.
+install: build
+	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 format:
 	@clang-format -i $$(git ls-files '*.cpp' '*.hpp')

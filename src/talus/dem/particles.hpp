@@ -1,6 +1,7 @@
 #pragma once
 // Particle state as a structure of arrays: the hot loops touch only the fields
 // they need, and the layout vectorises.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -68,7 +69,10 @@ struct Particles {
     {
       std::vector<T> out(order.size());
       for (std::size_t k = 0; k < order.size(); ++k) out[k] = a[order[k]];
-      a.swap(out);
+      // Back into the same storage (a shorter order only shrinks it): the
+      // Python API's views of the arrays keep their address across re-sorts.
+      std::copy(out.begin(), out.end(), a.begin());
+      a.resize(out.size());
     }
   }
 };

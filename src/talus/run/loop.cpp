@@ -35,6 +35,11 @@ void RunLoop::start(bool fresh) {
   if (finished_) sim_.finish();
 }
 
+void RunLoop::flush() {
+  for (auto* o : observers_) o->on_progress();
+  sim_.outputs().on_progress();
+}
+
 void RunLoop::series() {
   for (auto* o : observers_) o->on_series();
   sim_.outputs().on_series();

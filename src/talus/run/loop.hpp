@@ -35,6 +35,9 @@ class RunLoop {
   // Up to `steps` steps (<0: no limit), not past `until`. Returns what this call did.
   RunStats advance(double until, std::int64_t steps);
   bool done() const { return finished_; }
+  // Flushes every observer's files (what on_progress flushes), for a run
+  // its caller ends before the end.
+  void flush();
   // Everything this loop has done so far.
   const RunStats& stats() const { return total_; }
 

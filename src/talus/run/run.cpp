@@ -165,6 +165,7 @@ void RunSession::fail(const std::exception& e) {
     // On a full disk it may not fit either: the failure's own message is what counts.
   }
   log_->ended(fmt::format("failed at t = {:.6g} s: {}", sim_->time(), e.what()));
+  folder_.reset();  // the lock: another run (a resume) may use the folder now
 }
 
 RunStats RunSession::advance(double until, std::int64_t steps) {
@@ -193,6 +194,7 @@ RunResult RunSession::finish() {
   if (finished_) throw InputError(out_.string() + ": this run is already finished");
   const bool done = started_ && loop_->done();
   try {
+    if (!done) loop_->flush();  // a completed run's files are complete already
     if (done)
       for (auto& e : experiments_) summary_.experiments[e->name()] = e->finish();
     fill(done ? "completed" : "stopped", "");
@@ -202,6 +204,7 @@ RunResult RunSession::finish() {
     throw;
   }
   finished_ = true;
+  folder_.reset();  // the lock: another run (a resume) may use the folder now
   if (done)
     log_->ended(fmt::format("completed: {} steps to t = {:.6g} s in {:.1f} s of wall time",
                             summary_.steps, summary_.simulated_time, summary_.loop_seconds));

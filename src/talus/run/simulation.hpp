@@ -37,6 +37,19 @@ struct MethodReport {
   nlohmann::json run_extra = nlohmann::json::object();  // more counts for "run"
 };
 
+// One array of a method's state as the Python API shows it, without a copy:
+// C order (row-major) of `shape`. Valid until the method next changes its
+// storage (a DEM re-sort or removal); fetch the arrays again after stepping.
+struct StateArray {
+  enum class Type { Float64, Int64 };
+  std::string name;  // "x", "v", "h", ...
+  std::string unit;  // SI: "m", "m/s", "m^2/s", ...
+  Type type = Type::Float64;
+  void* data = nullptr;
+  std::vector<std::size_t> shape;  // {n}, {n, components} or {rows, columns}
+  bool writable = false;           // true where changing it between steps is meaningful
+};
+
 class Simulation {
  public:
   virtual ~Simulation() = default;
@@ -75,6 +88,8 @@ class Simulation {
   // End of the run: results written once (deposit maps, front tables).
   virtual void finish() {}
   virtual MethodReport report() const = 0;
+  // The state's arrays (none where a method shows none yet).
+  virtual std::vector<StateArray> state_arrays() { return {}; }
 };
 
 }  // namespace talus::run

@@ -163,6 +163,26 @@ MethodReport DemSimulation<D>::report() const {
 }
 
 template <int D>
+std::vector<StateArray> DemSimulation<D>::state_arrays() {
+  auto& p = run_.system.particles;
+  using Vec = typename dem::Particles<D>::Vec;
+  using Rot = typename dem::Particles<D>::Rot;
+  static_assert(sizeof(Vec) == D * sizeof(double), "positions must be D packed doubles");
+  constexpr std::size_t spin = sizeof(Rot) / sizeof(double);  // 1 in 2D, 3 in 3D
+  static_assert(spin == 1 || spin == D, "angular velocities: 1 or D packed doubles");
+  const std::size_t n = p.size();
+  using T = StateArray::Type;
+  const std::vector<std::size_t> vec{n, D}, scalar{n};
+  return {{"x", "m", T::Float64, p.x.data(), vec, false},
+          {"v", "m/s", T::Float64, p.v.data(), vec, true},
+          {"w", "rad/s", T::Float64, p.w.data(), spin == 1 ? scalar : vec, true},
+          {"f", "N", T::Float64, p.f.data(), vec, false},
+          {"r", "m", T::Float64, p.r.data(), scalar, false},
+          {"m", "kg", T::Float64, p.m.data(), scalar, false},
+          {"id", "", T::Int64, p.id.data(), scalar, false}};
+}
+
+template <int D>
 double DemSimulation<D>::kinetic_energy() const {
   return dem::kinetic_energy(run_.system.particles);
 }

@@ -56,6 +56,9 @@ class DemSimulation : public Simulation {
   Observer& outputs() override { return *outputs_observer_; }
   void after_series() override;
   MethodReport report() const override;
+  // Positions, velocities (writable), angular velocities (writable), forces,
+  // radii, masses and ids of the particles, in their current order.
+  std::vector<StateArray> state_arrays() override;
 
   dem::DemRun<D>& dem_run() { return run_; }
   const dem::DemRun<D>& dem_run() const { return run_; }

@@ -19,6 +19,11 @@ class Fv2dSimulation final
 
  private:
   std::vector<double> normal_heights() const override;
+  // h (m, vertical depth), hu and hv (m^2/s).
+  std::vector<Field> solver_fields() const override {
+    const auto& s = solver_.state();
+    return {{"h", "m", &s.h}, {"hu", "m^2/s", &s.hu}, {"hv", "m^2/s", &s.hv}};
+  }
   bool momentum_stop_ = false;  // stopped by run.stop_momentum_fraction
 };
 

@@ -68,6 +68,21 @@ class GridSimulation : public Simulation {
 
   const Solver& solver() const { return solver_; }
   const Maxima& maxima() const { return maxima_; }
+  // The solver's fields per cell (rows from north to south, columns from
+  // west to east, as the rasters and .npy maps) and the bed's elevation;
+  // read-only.
+  std::vector<StateArray> state_arrays() override {
+    const auto& g = solver_.terrain().shape();
+    auto grid = [&](const char* name, const char* unit, const std::vector<double>& field) {
+      // Read-only: the view drops its write flag.
+      return StateArray{name, unit, StateArray::Type::Float64, const_cast<double*>(field.data()),
+                        {g.ny, g.nx}, false};
+    };
+    std::vector<StateArray> out;
+    for (const auto& [name, unit, field] : solver_fields()) out.push_back(grid(name, unit, *field));
+    out.push_back(grid("elevation", "m", solver_.terrain().elevation()));
+    return out;
+  }
 
  protected:
   GridSimulation(runout::RunoutScenario scenario, int threads,
@@ -102,6 +117,13 @@ class GridSimulation : public Simulation {
 
   // The bed-normal height per cell (the mixture's): the front along a path.
   virtual std::vector<double> normal_heights() const = 0;
+  struct Field {
+    const char* name;
+    const char* unit;
+    const std::vector<double>* values;
+  };
+  // The solver's state per cell, named (state_arrays).
+  virtual std::vector<Field> solver_fields() const = 0;
 
   runout::RunoutScenario scenario_;
   Solver solver_;

@@ -24,6 +24,12 @@ class TwoPhaseSimulation final
 
  private:
   std::vector<double> normal_heights() const override;  // of the mixture
+  // Each phase's vertical depth and momenta per unit density (state's fields).
+  std::vector<Field> solver_fields() const override {
+    const auto& s = solver_.state();
+    return {{"hs", "m", &s.hs}, {"hsu", "m^2/s", &s.hsu}, {"hsv", "m^2/s", &s.hsv},
+            {"hf", "m", &s.hf}, {"hfu", "m^2/s", &s.hfu}, {"hfv", "m^2/s", &s.hfv}};
+  }
 };
 
 }  // namespace talus::run

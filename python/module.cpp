@@ -1,0 +1,103 @@
+// talus._talus: the run layer's RunSession and validate() for Python. The
+// package (talus/__init__.py) builds the user's API on these: Run, read_run,
+// callbacks. State arrays are numpy views of the method's own memory.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "talus/core/error.hpp"
+#include "talus/core/version.hpp"
+#include "talus/run/run.hpp"
+#include "talus/run/session.hpp"
+
+namespace py = pybind11;
+using talus::run::RunRequest;
+using talus::run::RunSession;
+using talus::run::StateArray;
+
+namespace {
+
+std::unique_ptr<RunSession> open_session(const std::string& file, const std::string& out,
+                                         const std::string& resume,
+                                         const std::vector<std::string>& sets, int threads,
+                                         bool force, bool allow_long_run) {
+  RunRequest req;
+  req.file = file, req.out = out, req.resume = resume, req.sets = sets;
+  req.threads = threads, req.force = force, req.allow_long_run = allow_long_run;
+  return std::make_unique<RunSession>(req);
+}
+
+// A numpy view of one state array; `owner` (the Python session) stays alive
+// while the view does.
+py::array view(const StateArray& a, py::handle owner) {
+  const bool f64 = a.type == StateArray::Type::Float64;
+  const py::dtype dtype = f64 ? py::dtype::of<double>() : py::dtype::of<std::int64_t>();
+  const auto item = static_cast<py::ssize_t>(f64 ? sizeof(double) : sizeof(std::int64_t));
+  std::vector<py::ssize_t> shape, strides(a.shape.size());
+  for (std::size_t n : a.shape) shape.push_back(static_cast<py::ssize_t>(n));
+  py::ssize_t stride = item;
+  for (std::size_t k = shape.size(); k-- > 0;) strides[k] = stride, stride *= shape[k];
+  py::array out(dtype, shape, strides, a.data, owner);
+  if (!a.writable) out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_talus, m) {
+  m.doc() = "talus's run layer (use the talus package, not this module)";
+  py::register_exception<talus::InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<talus::RunError>(m, "RunError", PyExc_RuntimeError);
+  m.attr("__version__") = talus::version();
+  m.def(
+      "validate",
+      [](const std::string& path, const std::vector<std::string>& sets, bool allow_long_run) {
+        return talus::run::validate(path, sets, allow_long_run);
+      },
+      py::arg("path"), py::arg("sets"), py::arg("allow_long_run") = false);
+  py::class_<RunSession>(m, "Session")
+      .def(py::init(&open_session), py::arg("file"), py::arg("out"), py::arg("resume"),
+           py::arg("sets"), py::arg("threads"), py::arg("force"), py::arg("allow_long_run"))
+      .def(
+          "advance",
+          [](RunSession& s, double until, std::int64_t steps) {
+            py::gil_scoped_release free_python;  // other Python threads go on meanwhile
+            return s.advance(until, steps).steps;
+          },
+          py::arg("until"), py::arg("steps"))
+      .def("finish",
+           [](RunSession& s) {
+             const auto r = s.finish();
+             py::dict out;
+             out["out"] = r.out.string();
+             out["headline"] = r.headline;
+             out["warnings"] = r.warnings;
+             return out;
+           })
+      .def_property_readonly("time", [](const RunSession& s) { return s.simulation().time(); })
+      .def_property_readonly("steps", [](const RunSession& s) { return s.simulation().steps(); })
+      .def_property_readonly("end_time",
+                             [](const RunSession& s) { return s.simulation().end_time(); })
+      .def_property_readonly("time_step",
+                             [](const RunSession& s) { return s.simulation().time_step(); })
+      .def_property_readonly("done", &RunSession::done)
+      .def_property_readonly("finished", &RunSession::finished)
+      .def_property_readonly("out", [](const RunSession& s) { return s.out().string(); })
+      .def("arrays",
+           [](py::object self) {
+             auto& s = self.cast<RunSession&>();
+             py::dict out;
+             for (const auto& a : s.simulation().state_arrays())
+               out[a.name.c_str()] = view(a, self);
+             return out;
+           })
+      .def("units", [](RunSession& s) {
+        py::dict out;
+        for (const auto& a : s.simulation().state_arrays()) out[a.name.c_str()] = a.unit;
+        return out;
+      });
+}

@@ -1,0 +1,190 @@
+"""talus from Python: run any method of a scenario file, step it, look at its
+state as numpy arrays between steps, stop it from a callback, and read a run
+folder back. The reference is docs/python.md.
+
+    import talus
+    with talus.Run("scenarios/dem/collapse_2d.toml", out="/tmp/c", force=True) as run:
+        run.run(until=0.1)
+        x = run.arrays()["x"]          # particle positions, a view (no copy)
+    data = talus.read_run("/tmp/c")    # summary, series (pandas), snapshots
+
+Errors: talus.InputError (bad input, before anything runs; the message names
+file, line and key as on the command line) and talus.RunError (a run that went
+wrong: its summary.json then says "failed" and why).
+"""
+import json
+import math
+import os
+
+from . import _talus
+from ._talus import InputError, RunError, __version__
+
+__all__ = ["Run", "RunData", "InputError", "RunError", "read_run", "run", "validate"]
+
+
+def _toml_value(value, key):
+    """A Python value as the TOML text of a --set override."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    if isinstance(value, str):
+        return json.dumps(value)  # a TOML basic string for any text
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml_value(v, key) for v in value) + "]"
+    raise InputError(f"overrides: '{key}': {type(value).__name__} is not a TOML value "
+                     "(give a number, string, bool or list)")
+
+
+def _sets(overrides):
+    """{"run.duration": 0.5} -> ["run.duration=0.5"] (the command line's --set)."""
+    if overrides is None:
+        return []
+    if not isinstance(overrides, dict):
+        raise InputError("overrides: expected a dict of dotted keys, e.g. {'run.duration': 0.5}")
+    return [f"{key}={_toml_value(value, key)}" for key, value in overrides.items()]
+
+
+def validate(scenario, overrides=None, allow_long_run=False):
+    """Parses and builds a scenario without running it, as `talus validate`
+    does: returns the one-line description, raises InputError."""
+    return _talus.validate(os.fspath(scenario), _sets(overrides), allow_long_run)
+
+
+class Run:
+    """One run of a scenario file, driven from Python.
+
+    The constructor checks the scenario (InputError), claims the output folder
+    (`out`, default runs/<name> as on the command line; `force=True` empties a
+    folder talus wrote before) and builds the method; nothing has stepped yet.
+    `resume=DIR` continues the run in DIR from its checkpoint instead.
+    The run writes what `talus run` writes (summary.json, series.csv,
+    snapshots, log.txt) on the same simulated times however it is stepped.
+    """
+
+    def __init__(self, scenario=None, *, out=None, overrides=None, threads=1, force=False,
+                 resume=None, allow_long_run=False):
+        self._session = _talus.Session(
+            os.fspath(scenario) if scenario is not None else "",
+            os.fspath(out) if out is not None else "",
+            os.fspath(resume) if resume is not None else "",
+            _sets(overrides), int(threads), bool(force), bool(allow_long_run))
+        self.result = None  # finish()'s dict once finished
+
+    # The clock and where the run writes.
+    time = property(lambda self: self._session.time, doc="simulated time, s")
+    steps = property(lambda self: self._session.steps, doc="steps taken since t = 0")
+    end_time = property(lambda self: self._session.end_time, doc="the run's end time, s")
+    time_step = property(lambda self: self._session.time_step, doc="the last time step, s")
+    done = property(lambda self: self._session.done,
+                    doc="True once the end time is reached or the method stopped (at rest)")
+    out = property(lambda self: self._session.out, doc="the run folder")
+
+    def step(self, n=1):
+        """Takes up to n steps (fewer at the end); returns how many were taken."""
+        if n < 1:
+            raise InputError(f"step: n must be at least 1, got {n}")
+        return self._session.advance(math.inf, int(n))
+
+    def run(self, until=None, *, every_steps=None, every_time=None, callback=None):
+        """Steps to `until` (s; default the end). With a callback, calls
+        callback(run) every `every_steps` steps or `every_time` simulated
+        seconds (one of them); the run stops there when it returns True.
+        Returns the number of steps taken."""
+        end = self.end_time if until is None else min(float(until), self.end_time)
+        if callback is None:
+            return self._session.advance(end, -1)
+        if (every_steps is None) == (every_time is None):
+            raise InputError("run: with a callback give exactly one of every_steps, every_time")
+        if every_steps is not None and every_steps < 1:
+            raise InputError(f"run: every_steps must be at least 1, got {every_steps}")
+        if every_time is not None and not every_time > 0:
+            raise InputError(f"run: every_time must be > 0 s, got {every_time}")
+        taken = 0
+        tolerance = 1e-9 * max(1.0, self.end_time)
+        next_time = self.time + (every_time or 0.0)
+        while not self.done and self.time < end - tolerance:
+            if every_steps is not None:
+                taken += self._session.advance(end, int(every_steps))
+            else:
+                taken += self._session.advance(min(next_time, end), -1)
+                while next_time <= self.time + tolerance:
+                    next_time += every_time
+            if callback(self) is True:
+                break
+        return taken
+
+    def arrays(self):
+        """The method's state as numpy arrays without copies, by name (see
+        units()). DEM: x, v, w, f, r, m, id (v and w writable: a change acts
+        on the next step); fv2d: h, hu, hv, elevation; two-phase: hs, hsu,
+        hsv, hf, hfu, hfv, elevation (grids as [row from north, column from
+        west], like the .npy maps); read-only elsewhere. A view is valid until the next step."""
+        return self._session.arrays()
+
+    def units(self):
+        """The SI unit of each array of arrays()."""
+        return self._session.units()
+
+    def finish(self):
+        """Writes summary.json ("completed" when done, else "stopped") and
+        returns {"out", "headline", "warnings"}."""
+        if self.result is None:
+            self.result = self._session.finish()
+        return self.result
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, value, traceback):
+        if self.result is None and not self._session.finished:
+            self.finish()
+        return False
+
+
+class RunData:
+    """A run folder read back: summary (dict of summary.json), series (a
+    pandas DataFrame of series.csv, None without one), snapshots (the
+    snapshot files' paths in time order), folder."""
+
+    def __init__(self, folder, summary, series, snapshots):
+        self.folder, self.summary, self.series, self.snapshots = folder, summary, series, snapshots
+
+    def __repr__(self):
+        return (f"RunData({self.folder!r}, status={self.summary.get('status')!r}, "
+                f"{0 if self.series is None else len(self.series)} series rows, "
+                f"{len(self.snapshots)} snapshots)")
+
+
+def read_run(folder):
+    """Reads a run folder (summary.json, series.csv, snapshots/) into RunData."""
+    folder = os.fspath(folder)
+    path = os.path.join(folder, "summary.json")
+    if not os.path.isfile(path):
+        raise InputError(f"{folder}: no summary.json (not a talus run folder, or still running)")
+    with open(path) as f:
+        summary = json.load(f)
+    series = None
+    csv = os.path.join(folder, "series.csv")
+    if os.path.isfile(csv):
+        import pandas
+        series = pandas.read_csv(csv)
+    shots = os.path.join(folder, "snapshots")
+    snapshots = []
+    if os.path.isdir(shots):
+        snapshots = sorted(os.path.join(shots, name) for name in os.listdir(shots)
+                           if not name.endswith(".pvd"))
+    return RunData(folder, summary, series, snapshots)
+
+
+def run(scenario, **kwargs):
+    """Runs a scenario to its end (the keywords of Run) and reads it back."""
+    with Run(scenario, **kwargs) as r:
+        r.run()
+    return read_run(r.out)
