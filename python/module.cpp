@@ -41,6 +41,8 @@ py::array view(const StateArray& a, py::handle owner) {
   for (std::size_t n : a.shape) shape.push_back(static_cast<py::ssize_t>(n));
   py::ssize_t stride = item;
   for (std::size_t k = shape.size(); k-- > 0;) strides[k] = stride, stride *= shape[k];
+  if (!a.strides.empty())
+    for (std::size_t k = 0; k < strides.size(); ++k) strides[k] = a.strides[k];
   py::array out(dtype, shape, strides, a.data, owner);
   if (!a.writable) out.attr("flags").attr("writeable") = false;
   return out;

@@ -154,3 +154,24 @@ def test_grid_arrays_hold_the_flow(tmp_path):
     dx, dy = data.summary["resolved"]["cell_size_m"]
     assert h.shape == (data.summary["resolved"]["cells_y"], data.summary["resolved"]["cells_x"])
     assert h.sum() * dx * dy == pytest.approx(data.series["volume"].iloc[-1], rel=1e-12)
+
+
+def test_mpm_arrays_hold_the_points_and_their_stresses(tmp_path):
+    column = os.path.join(ROOT, "scenarios", "mpm", "mpm_column_collapse.toml")
+    with talus.Run(column, out=tmp_path / "mpm", overrides={"run.duration": 0.01}) as run:
+        run.run()
+        a = run.arrays()
+        n = a["x"].shape[0]
+        assert a["v"].flags.writeable and not a["stress"].flags.writeable
+        assert a["stress"].shape == (n, 3, 3) and a["mass"].shape == (n,)
+        s = a["stress"].copy()
+        y = a["x"][:, 1].copy()
+    data = talus.read_run(tmp_path / "mpm")
+    assert n == data.series["points"].iloc[-1]
+    # The stride of the stress (a field of each point's material state) read
+    # right: Cauchy stresses are symmetric, and the column's weight compresses
+    # (tension positive) its lower half, while after 0.01 s the loading from
+    # the base has not yet reached the upper half (no tension there).
+    assert np.abs(s - s.transpose(0, 2, 1)).max() <= 1e-9 * np.abs(s).max()
+    lower = y < np.median(y)
+    assert s[lower, 1, 1].mean() < 0.0 <= -s[~lower, 1, 1].mean()

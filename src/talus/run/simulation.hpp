@@ -48,6 +48,9 @@ struct StateArray {
   void* data = nullptr;
   std::vector<std::size_t> shape;  // {n}, {n, components} or {rows, columns}
   bool writable = false;           // true where changing it between steps is meaningful
+  // Bytes between neighbours along each axis; empty: packed in C order. (A
+  // field of an array of structs, e.g. MPM stresses, is strided.)
+  std::vector<std::ptrdiff_t> strides = {};
 };
 
 class Simulation {

@@ -140,6 +140,32 @@ MethodReport MpmSimulation<D>::report() const {
 }
 
 template <int D>
+std::vector<StateArray> MpmSimulation<D>::state_arrays() {
+  auto& p = solver_.particles;
+  using Vec = typename mpm::Particles<D>::Vec;
+  static_assert(sizeof(Vec) == D * sizeof(double), "positions must be D packed doubles");
+  const std::size_t n = p.x.size();
+  using T = StateArray::Type;
+  const std::vector<std::size_t> vec{n, D}, scalar{n};
+  std::vector<StateArray> out = {
+      {"x", "m", T::Float64, p.x.data(), vec, false},
+      {"v", "m/s", T::Float64, p.v.data(), vec, true},
+      {"mass", "kg", T::Float64, p.mass.data(), scalar, false},
+      {"volume", D == 2 ? "m^2" : "m^3", T::Float64, p.volume.data(), scalar, false}};
+  // The stress is the first member of each point's MaterialState; Eigen's
+  // matrices are column-major, so (i, j) lies (i + 3 j) doubles in.
+  const auto row = static_cast<std::ptrdiff_t>(sizeof(double));
+  out.push_back({"stress",
+                 "Pa",
+                 T::Float64,
+                 n > 0 ? p.state[0].stress.data() : nullptr,
+                 {n, 3, 3},
+                 false,
+                 {static_cast<std::ptrdiff_t>(sizeof(mpm::MaterialState)), row, 3 * row}});
+  return out;
+}
+
+template <int D>
 double MpmSimulation<D>::kinetic_energy() const {
   return mpm::total_kinetic_energy(solver_);
 }

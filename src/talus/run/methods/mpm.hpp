@@ -36,6 +36,9 @@ class MpmSimulation : public Simulation {
   void advance(double target, double tolerance, std::int64_t max_steps) override;
   Observer& outputs() override { return *files_observer_; }
   MethodReport report() const override;
+  // The material points: positions, velocities (writable), masses, volumes,
+  // Cauchy stresses (3 x 3, also in 2D: plane strain), in their own order.
+  std::vector<StateArray> state_arrays() override;
 
   mpm::Solver<D>& solver() { return solver_; }
   const mpm::MpmScenario& scenario() const { return scenario_; }
