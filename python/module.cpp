@@ -5,6 +5,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,6 +50,34 @@ py::array view(const StateArray& a, py::handle owner) {
   return out;
 }
 
+// Up to `steps` steps (< 0: no limit) towards `until`, in pieces of about a
+// tenth of a second of wall time: between pieces Python's signals are looked
+// at (Ctrl-C raises KeyboardInterrupt; the run can still be finished), and
+// while a piece runs the GIL is free for other Python threads. The pieces do
+// not change the results (outputs fall on the same times however the loop
+// is driven).
+std::int64_t advance(RunSession& s, double until, std::int64_t steps) {
+  using Clock = std::chrono::steady_clock;
+  std::int64_t taken = 0, piece = 1;
+  for (;;) {
+    const std::int64_t ask = steps < 0 ? piece : std::min(piece, steps - taken);
+    if (ask <= 0) break;
+    const auto t0 = Clock::now();
+    std::int64_t got = 0;
+    {
+      py::gil_scoped_release free_python;
+      got = s.advance(until, ask).steps;
+    }
+    taken += got;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (got < ask) break;  // at `until`, the end, or the method stopped
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (seconds < 0.05 && piece < (std::int64_t{1} << 40)) piece *= 2;
+    if (seconds > 0.2 && piece > 1) piece /= 2;
+  }
+  return taken;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_talus, m) {
@@ -64,13 +94,7 @@ PYBIND11_MODULE(_talus, m) {
   py::class_<RunSession>(m, "Session")
       .def(py::init(&open_session), py::arg("file"), py::arg("out"), py::arg("resume"),
            py::arg("sets"), py::arg("threads"), py::arg("force"), py::arg("allow_long_run"))
-      .def(
-          "advance",
-          [](RunSession& s, double until, std::int64_t steps) {
-            py::gil_scoped_release free_python;  // other Python threads go on meanwhile
-            return s.advance(until, steps).steps;
-          },
-          py::arg("until"), py::arg("steps"))
+      .def("advance", &advance, py::arg("until"), py::arg("steps"))
       .def("finish",
            [](RunSession& s) {
              const auto r = s.finish();

@@ -175,3 +175,16 @@ def test_mpm_arrays_hold_the_points_and_their_stresses(tmp_path):
     assert np.abs(s - s.transpose(0, 2, 1)).max() <= 1e-9 * np.abs(s).max()
     lower = y < np.median(y)
     assert s[lower, 1, 1].mean() < 0.0 <= -s[~lower, 1, 1].mean()
+
+
+def test_ctrl_c_interrupts_a_run_that_can_then_be_finished(tmp_path):
+    import _thread
+
+    with talus.Run(COLLAPSE, out=tmp_path / "int", overrides={"run.duration": 5.0}) as run:
+        timer = threading.Timer(0.3, _thread.interrupt_main)  # as if Ctrl-C were pressed
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            run.run()
+        timer.join()
+        assert 0.0 < run.time < 5.0 and not run.done
+    assert talus.read_run(tmp_path / "int").summary["status"] == "stopped"
