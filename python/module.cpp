@@ -13,6 +13,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
+#include "talus/io/toml_reader.hpp"
 #include "talus/run/run.hpp"
 #include "talus/run/session.hpp"
 
@@ -23,12 +24,12 @@ using talus::run::StateArray;
 
 namespace {
 
-std::unique_ptr<RunSession> open_session(const std::string& file, const std::string& out,
-                                         const std::string& resume,
+std::unique_ptr<RunSession> open_session(const std::string& file, const std::string& text,
+                                         const std::string& out, const std::string& resume,
                                          const std::vector<std::string>& sets, int threads,
                                          bool force, bool allow_long_run) {
   RunRequest req;
-  req.file = file, req.out = out, req.resume = resume, req.sets = sets;
+  req.file = file, req.text = text, req.out = out, req.resume = resume, req.sets = sets;
   req.threads = threads, req.force = force, req.allow_long_run = allow_long_run;
   return std::make_unique<RunSession>(req);
 }
@@ -85,15 +86,24 @@ PYBIND11_MODULE(_talus, m) {
   py::register_exception<talus::InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<talus::RunError>(m, "RunError", PyExc_RuntimeError);
   m.attr("__version__") = talus::version();
+  m.attr("DICT_SCENARIO") = std::string(talus::io::kDictScenario);
   m.def(
       "validate",
       [](const std::string& path, const std::vector<std::string>& sets, bool allow_long_run) {
         return talus::run::validate(path, sets, allow_long_run);
       },
       py::arg("path"), py::arg("sets"), py::arg("allow_long_run") = false);
+  m.def(
+      "validate_text",
+      [](const std::string& text, const std::string& path, const std::vector<std::string>& sets,
+         bool allow_long_run) {
+        return talus::run::validate_text(text, path, sets, allow_long_run);
+      },
+      py::arg("text"), py::arg("path"), py::arg("sets"), py::arg("allow_long_run") = false);
   py::class_<RunSession>(m, "Session")
-      .def(py::init(&open_session), py::arg("file"), py::arg("out"), py::arg("resume"),
-           py::arg("sets"), py::arg("threads"), py::arg("force"), py::arg("allow_long_run"))
+      .def(py::init(&open_session), py::arg("file"), py::arg("text"), py::arg("out"),
+           py::arg("resume"), py::arg("sets"), py::arg("threads"), py::arg("force"),
+           py::arg("allow_long_run"))
       .def("advance", &advance, py::arg("until"), py::arg("steps"))
       .def("finish",
            [](RunSession& s) {

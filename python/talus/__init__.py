@@ -19,7 +19,8 @@ import os
 from . import _talus
 from ._talus import InputError, RunError, __version__
 
-__all__ = ["Run", "RunData", "InputError", "RunError", "read_run", "run", "validate"]
+__all__ = ["Run", "RunData", "Scenario", "InputError", "RunError", "load_scenario", "read_run",
+           "run", "validate"]
 
 
 def _toml_value(value, key):
@@ -51,10 +52,58 @@ def _sets(overrides):
     return [f"{key}={_toml_value(value, key)}" for key, value in overrides.items()]
 
 
+def _inline(value, key):
+    """A Python value as TOML inline text: dicts as inline tables."""
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{json.dumps(str(k))} = {_inline(v, f'{key}.{k}')}"
+                               for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_inline(v, f"{key}.{i}") for i, v in enumerate(value)) + "]"
+    return _toml_value(value, key)
+
+
+class Scenario:
+    """A checked scenario: from a file, or from a dict laid out as the TOML
+    file would be ({"method": "dem", "run": {...}, "materials": [{...}]}).
+    Built by load_scenario(); give it to Run() or validate()."""
+
+    def __init__(self, path, text, overrides):
+        self.path, self.text, self.overrides = path, text, overrides
+        self.description = _talus.validate_text(text, path, overrides) if text is not None \
+            else _talus.validate(path, overrides)
+
+    def __repr__(self):
+        return f"Scenario({self.path!r}: {self.description})"
+
+
+def load_scenario(source, overrides=None, base=None):
+    """A Scenario from a file path or a dict, with --set style overrides,
+    checked as `talus validate` checks a file: InputError names the file, line
+    and key, or for a dict the dotted path of the key in it
+    (".../(dict): materials.0.density: ..."). A dict's relative file names
+    (terrain rasters) resolve against `base` (default: the current folder)."""
+    sets = _sets(overrides)
+    if isinstance(source, dict):
+        path = os.path.join(os.path.abspath(base or os.getcwd()), _talus.DICT_SCENARIO)
+        # The dict's values go in as overrides of an empty file: without lines,
+        # so messages name them by their path in the dict.
+        values = [f"{k}={_inline(v, k)}" for k, v in source.items()]
+        return Scenario(path, "# a scenario from a Python dict\n", values + sets)
+    return Scenario(os.fspath(source), None, sets)
+
+
 def validate(scenario, overrides=None, allow_long_run=False):
-    """Parses and builds a scenario without running it, as `talus validate`
-    does: returns the one-line description, raises InputError."""
-    return _talus.validate(os.fspath(scenario), _sets(overrides), allow_long_run)
+    """Parses and builds a scenario (a path, a dict or a Scenario) without
+    running it, as `talus validate` does: returns the one-line description,
+    raises InputError."""
+    if not isinstance(scenario, Scenario):
+        scenario = load_scenario(scenario, overrides)
+    elif overrides:
+        scenario = Scenario(scenario.path, scenario.text, scenario.overrides + _sets(overrides))
+    if scenario.text is not None:
+        return _talus.validate_text(scenario.text, scenario.path, scenario.overrides,
+                                    allow_long_run)
+    return _talus.validate(scenario.path, scenario.overrides, allow_long_run)
 
 
 class Run:
@@ -70,11 +119,18 @@ class Run:
 
     def __init__(self, scenario=None, *, out=None, overrides=None, threads=1, force=False,
                  resume=None, allow_long_run=False):
+        path, text, sets = "", "", _sets(overrides)
+        if isinstance(scenario, dict):
+            scenario = load_scenario(scenario)
+        if isinstance(scenario, Scenario):
+            path, text, sets = scenario.path, scenario.text or "", scenario.overrides + sets
+        elif scenario is not None:
+            path = os.fspath(scenario)
         self._session = _talus.Session(
-            os.fspath(scenario) if scenario is not None else "",
+            path, text,
             os.fspath(out) if out is not None else "",
             os.fspath(resume) if resume is not None else "",
-            _sets(overrides), int(threads), bool(force), bool(allow_long_run))
+            sets, int(threads), bool(force), bool(allow_long_run))
         self.result = None  # finish()'s dict once finished
 
     # The clock and where the run writes.

@@ -188,3 +188,22 @@ def test_ctrl_c_interrupts_a_run_that_can_then_be_finished(tmp_path):
         timer.join()
         assert 0.0 < run.time < 5.0 and not run.done
     assert talus.read_run(tmp_path / "int").summary["status"] == "stopped"
+
+
+def test_a_dict_scenario_runs_as_its_file_and_errors_name_the_dict_path(tmp_path):
+    import tomllib
+
+    with open(COLLAPSE, "rb") as f:
+        as_dict = tomllib.load(f)
+    as_dict["run"]["duration"] = 0.01
+    scenario = talus.load_scenario(as_dict, base=os.path.dirname(COLLAPSE))
+    assert scenario.description.startswith("valid (2D DEM, 1160 particles")
+    talus.run(scenario, out=tmp_path / "dict")
+    reference = cli_run(tmp_path, "file", {"run.duration": 0.01})
+    assert filecmp.cmp(reference / "series.csv", tmp_path / "dict" / "series.csv", shallow=False)
+    as_dict["materials"][0]["density"] = -5
+    with pytest.raises(talus.InputError) as bad:
+        talus.load_scenario(as_dict)
+    message = str(bad.value)
+    assert "(dict): materials.0.density: expected a positive number" in message
+    assert "--set" not in message

@@ -164,7 +164,9 @@ std::string TomlReader::where(std::string_view key) const {
   const toml::node* node = table_->get(key);
   const std::string file = file_of(node ? node : table_);
   const std::string dotted = path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
-  if (node && node->source().begin.line == 0) return fmt::format("{}: --set {}", file_, dotted);
+  if (node && node->source().begin.line == 0)
+    return is_dict_scenario(file_) ? fmt::format("{}: {}", file_, dotted)
+                                   : fmt::format("{}: --set {}", file_, dotted);
   const int at = node ? static_cast<int>(node->source().begin.line) : line();
   const std::string head = at > 0 ? fmt::format("{}:{}:", file, at) : file + ":";
   const std::string section = label();

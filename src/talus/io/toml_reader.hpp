@@ -150,4 +150,11 @@ std::string node_text(const toml::node& node);
 // set here carry no source line, so readers report them as coming from --set.
 void apply_overrides(toml::table& table, const std::vector<std::string>& sets);
 
+// The name that ends the path of a scenario built from a Python dict (its
+// folder resolves relative paths; python/talus/__init__.py): its values come
+// as overrides without lines, and messages name them by their dotted path
+// in the dict rather than as --set.
+inline constexpr std::string_view kDictScenario = "(dict)";
+inline bool is_dict_scenario(std::string_view path) { return path.ends_with(kDictScenario); }
+
 }  // namespace talus::io

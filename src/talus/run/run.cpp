@@ -76,7 +76,8 @@ io::ScenarioFile load(const RunRequest& req, fs::path& out) {
     return io::load_scenario_file((out / "scenario.toml").string(), {});
   }
   if (req.file.empty()) throw InputError("talus run: a scenario file is required");
-  auto file = io::load_scenario_file(req.file, req.sets);
+  auto file = req.text.empty() ? io::load_scenario_file(req.file, req.sets)
+                               : io::load_scenario_text(req.text, req.file, req.sets);
   const std::string name = file.table["name"].value_or(std::string());
   if (file.table.contains("name")) check_run_name(name, where_name(file));
   out = !req.out.empty() ? req.out : fs::path("runs") / (name.empty() ? "run" : name);
@@ -232,9 +233,10 @@ RunResult execute(const RunRequest& req) {
   return session.finish();
 }
 
-std::string validate(const std::string& path, const std::vector<std::string>& sets,
-                     bool allow_long_run) {
-  const auto file = io::load_scenario_file(path, sets);
+namespace {
+
+std::string validate_file(const io::ScenarioFile& file, bool allow_long_run) {
+  const std::string& path = file.path;
   if (file.table.contains("name"))
     check_run_name(file.table["name"].value_or(std::string()), where_name(file));
   if (file.method == "compare") {
@@ -246,6 +248,18 @@ std::string validate(const std::string& path, const std::vector<std::string>& se
   check_step_count(file.path, v.steps, v.duration, allow_long_run);
   return "valid (" + v.description +
          (v.steps >= 0.0 ? ", about " + step_count(v.steps) + " steps" : std::string()) + ")";
+}
+
+}  // namespace
+
+std::string validate(const std::string& path, const std::vector<std::string>& sets,
+                     bool allow_long_run) {
+  return validate_file(io::load_scenario_file(path, sets), allow_long_run);
+}
+
+std::string validate_text(const std::string& text, const std::string& path,
+                          const std::vector<std::string>& sets, bool allow_long_run) {
+  return validate_file(io::load_scenario_text(text, path, sets), allow_long_run);
 }
 
 }  // namespace talus::run

@@ -13,7 +13,11 @@
 namespace talus::run {
 
 struct RunRequest {
-  std::string file;               // the scenario; empty when resuming
+  std::string file;  // the scenario; empty when resuming
+  // The scenario's text instead of reading `file` (the Python API's
+  // scenarios from dicts); `file` then names it in messages, and relative
+  // paths in it resolve against its folder.
+  std::string text;
   std::filesystem::path out;      // empty: runs/<name>
   std::filesystem::path resume;   // a run folder to continue from its checkpoint
   std::vector<std::string> sets;  // "key=value" overrides
@@ -40,5 +44,8 @@ RunResult execute(const RunRequest& request);
 // Refuses (InputError) a run estimated above 10^9 steps unless `allow_long_run`.
 std::string validate(const std::string& file, const std::vector<std::string>& sets,
                      bool allow_long_run = false);
+// The same for a scenario's text, named `file` (RunRequest::text).
+std::string validate_text(const std::string& text, const std::string& file,
+                          const std::vector<std::string>& sets, bool allow_long_run = false);
 
 }  // namespace talus::run
