@@ -207,3 +207,15 @@ def test_a_dict_scenario_runs_as_its_file_and_errors_name_the_dict_path(tmp_path
     message = str(bad.value)
     assert "(dict): materials.0.density: expected a positive number" in message
     assert "--set" not in message
+
+
+def test_dan_arrays_hold_the_blocks(tmp_path):
+    flume = os.path.join(ROOT, "scenarios", "runout", "runout_flume_A.toml")
+    with talus.Run(flume, out=tmp_path / "dan", overrides={"run.duration": 0.5}) as run:
+        run.run()
+        a = run.arrays()
+        s, volume = a["s"].copy(), a["volume"].copy()
+        assert a["v"].shape == s.shape and a["k"].shape == volume.shape == (s.size - 1,)
+    data = talus.read_run(tmp_path / "dan")
+    assert np.all(np.diff(s) > 0)  # boundary blocks in order along the path
+    assert volume.sum() == pytest.approx(data.summary["metrics"]["volume_m3"], rel=1e-12)

@@ -66,6 +66,21 @@ class DanSimulation : public Simulation {
   Observer& outputs() override { return *outputs_; }
   void finish() override;
   MethodReport report() const override;
+  // The blocks, read-only: boundary blocks' path coordinates s and speeds v
+  // (n), the mass blocks' volumes and earth-pressure coefficients k (n - 1).
+  std::vector<StateArray> state_arrays() override {
+    const auto& b = setup_.model.blocks();
+    auto array = [](const char* name, const char* unit, const std::vector<double>& values) {
+      return StateArray{name,
+                        unit,
+                        StateArray::Type::Float64,
+                        const_cast<double*>(values.data()),
+                        {values.size()},
+                        false};
+    };
+    return {array("s", "m", b.s), array("v", "m/s", b.v), array("volume", "m^3", b.volume),
+            array("k", "", b.k)};
+  }
 
   const runout::RunoutResults& results() const { return tracker_.results(); }
   const runout::DanModel& model() const { return setup_.model; }
