@@ -132,7 +132,11 @@ int64_t hertz_scatter_pairs(const HertzPairsInput& in, std::size_t k0, std::size
   const auto& pairs = nl.pairs;
   auto& shear = nl.pair_shear;
   const BlockFn fn = Kernel::chosen().fn;
-  thread_local Block b;
+  // On the stack (its arrays are written before they are read): as a
+  // thread_local, position-independent code (the Python module links these
+  // libraries) kept its address in a register the loop needed, and the step
+  // took 15 % longer (bench/peer_talus.sh).
+  Block b;
   b.n = 0;
   if (in.n_materials == 1)
     for (int l = 0; l < kBlock; ++l) b.set_coeffs(l, in.coeffs[0]);
