@@ -1,7 +1,6 @@
 #include "commands.hpp"
 
 #include <fmt/core.h>
-#include <omp.h>
 #include <toml++/toml.h>
 #include <unistd.h>
 
@@ -36,7 +35,6 @@ void progress_line(const run::Progress& p) {
 }  // namespace
 
 int run_command(const RunOptions& opt) {
-  omp_set_num_threads(opt.threads);
   run::RunRequest req;
   req.file = resolve_scenario(opt.file);
   req.out = opt.out;

@@ -121,6 +121,28 @@ def test_resume_from_python_continues_bit_for_bit(tmp_path):
     assert physics(reference)["metrics"] == physics(tmp_path / "parts")["metrics"]
 
 
+@pytest.mark.parametrize("scenario, sets", [
+    (os.path.join("mpm", "mpm_column_collapse.toml"),
+     {"run.duration": 0.02, "output.series_interval": 0.002,
+      "output.checkpoint_interval": 0.008}),
+    (os.path.join("runout", "runout_terrain_2d.toml"),
+     {"run.duration": 6.0, "output.checkpoint_interval": 2.0}),
+])
+def test_mpm_and_fv2d_resume_from_python_bit_for_bit(tmp_path, scenario, sets):
+    path = os.path.join(ROOT, "scenarios", scenario)
+    whole = tmp_path / "whole"
+    args = [a for k, v in sets.items() for a in ("--set", f"{k}={v}")]
+    subprocess.run([BINARY, "run", path, "--out", str(whole), "--quiet", *args], check=True)
+    end = sets["run.duration"]
+    with talus.Run(path, out=tmp_path / "parts", overrides=sets) as run:
+        run.run(until=0.6 * end)  # past a checkpoint, then stopped
+    with talus.Run(resume=tmp_path / "parts") as run:
+        assert run.time < 0.6 * end
+        run.run()
+    assert filecmp.cmp(whole / "series.csv", tmp_path / "parts" / "series.csv", shallow=False)
+    assert physics(whole)["metrics"] == physics(tmp_path / "parts")["metrics"]
+
+
 def test_the_gil_is_released_while_a_run_steps(tmp_path):
     ticks = []
     stop = threading.Event()

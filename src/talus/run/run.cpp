@@ -1,6 +1,7 @@
 #include "talus/run/run.hpp"
 
 #include <fmt/core.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -88,6 +89,10 @@ io::ScenarioFile load(const RunRequest& req, fs::path& out) {
 
 RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resume.empty()) {
   const auto t0 = std::chrono::steady_clock::now();
+  // The team of every OpenMP loop that names none (sums, maps): the run's, in
+  // whatever process drives it (the command line, Python), so that the same
+  // scenario and thread count give the same bits.
+  omp_set_num_threads(std::max(1, req.threads));
   const auto file = load(req, out_);
   if (file.method == "compare")
     throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
