@@ -69,8 +69,13 @@ class Scenario:
 
     def __init__(self, path, text, overrides):
         self.path, self.text, self.overrides = path, text, overrides
-        self.description = _talus.validate_text(text, path, overrides) if text is not None \
-            else _talus.validate(path, overrides)
+        self.description = self.validate()
+
+    def validate(self, allow_long_run=False):
+        """`talus validate`'s line for this scenario; raises InputError."""
+        if self.text is not None:
+            return _talus.validate_text(self.text, self.path, self.overrides, allow_long_run)
+        return _talus.validate(self.path, self.overrides, allow_long_run)
 
     def __repr__(self):
         return f"Scenario({self.path!r}: {self.description})"
@@ -97,13 +102,10 @@ def validate(scenario, overrides=None, allow_long_run=False):
     running it, as `talus validate` does: returns the one-line description,
     raises InputError."""
     if not isinstance(scenario, Scenario):
-        scenario = load_scenario(scenario, overrides)
-    elif overrides:
+        return load_scenario(scenario, overrides).validate(allow_long_run)
+    if overrides:
         scenario = Scenario(scenario.path, scenario.text, scenario.overrides + _sets(overrides))
-    if scenario.text is not None:
-        return _talus.validate_text(scenario.text, scenario.path, scenario.overrides,
-                                    allow_long_run)
-    return _talus.validate(scenario.path, scenario.overrides, allow_long_run)
+    return scenario.validate(allow_long_run)
 
 
 class Run:

@@ -28,16 +28,18 @@ def physics(folder):
     return s
 
 
-def cli_run(tmp_path, name, overrides):
+def cli_run(tmp_path, name, overrides, threads=1):
     out = tmp_path / name
     sets = [a for k, v in overrides.items() for a in ("--set", f"{k}={v}")]
-    subprocess.run([BINARY, "run", COLLAPSE, "--out", str(out), "--quiet", *sets], check=True)
+    subprocess.run([BINARY, "run", COLLAPSE, "--out", str(out), "--quiet", "--threads",
+                    str(threads), *sets], check=True)
     return out
 
 
-def test_stepping_from_python_gives_the_command_lines_bits(tmp_path):
-    reference = cli_run(tmp_path, "cli", SHORT)
-    with talus.Run(COLLAPSE, out=tmp_path / "py", overrides=SHORT) as run:
+@pytest.mark.parametrize("threads", [1, 2])
+def test_stepping_from_python_gives_the_command_lines_bits(tmp_path, threads):
+    reference = cli_run(tmp_path, "cli", SHORT, threads)
+    with talus.Run(COLLAPSE, out=tmp_path / "py", overrides=SHORT, threads=threads) as run:
         # Irregular pieces: single steps, a step count, a time, then the end.
         for n in (1, 1, 7, 250):
             assert run.step(n) == n
@@ -68,7 +70,8 @@ def test_arrays_are_views_and_velocities_act_on_the_next_step(tmp_path):
     # grains' relative velocities, so the pair forces (elastic and damping) are
     # unchanged, and a grain off the walls shifts by dt exactly (to round-off);
     # the grains touching the floor, back wall or gate (4.5 % here) feel the
-    # walls' damping of the changed velocity.
+    # walls' damping of the changed velocity (measured: 95.5 % shift by dt to
+    # 1e-9, the others by 0.91-1 dt; the bounds leave room for another packing).
     shift = (x1[:, 0] - x0[:, 0]) / dt
     assert np.mean(np.abs(shift - 1.0) < 1e-9) > 0.9
     assert np.all(np.abs(shift - 1.0) < 0.2)

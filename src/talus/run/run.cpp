@@ -189,20 +189,16 @@ RunStats RunSession::advance(double until, std::int64_t steps) {
   }
 }
 
-RunStats RunSession::run_to_end() {
-  RunStats before = loop_->stats();
-  advance(sim_->end_time(), -1);
-  RunStats now = loop_->stats();
-  return {now.steps - before.steps, now.wall_seconds - before.wall_seconds, now.stopped_early};
-}
+RunStats RunSession::run_to_end() { return advance(sim_->end_time(), -1); }
 
 RunResult RunSession::finish() {
   if (finished_) throw InputError(out_.string() + ": this run is already finished");
   const bool done = started_ && loop_->done();
   try {
-    if (!done) loop_->flush();  // a completed run's files are complete already
     if (done)
       for (auto& e : experiments_) summary_.experiments[e->name()] = e->finish();
+    else
+      loop_->flush();  // a completed run's files are complete already
     fill(done ? "completed" : "stopped", "");
     write_summary(out_, summary_);
   } catch (const std::exception& e) {
