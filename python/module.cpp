@@ -79,6 +79,30 @@ std::int64_t advance(RunSession& s, double until, std::int64_t steps) {
   return taken;
 }
 
+// A velocity from Python: 2 or 3 numbers (z = 0 when 2).
+talus::Vec3 vector3(const std::vector<double>& v, const char* what) {
+  if (v.size() != 2 && v.size() != 3)
+    throw talus::InputError(std::string(what) + ": expected 2 or 3 numbers, got " +
+                            std::to_string(v.size()));
+  return {v[0], v[1], v.size() == 3 ? v[2] : 0.0};
+}
+
+py::tuple tuple3(const talus::Vec3& v) { return py::make_tuple(v.x(), v.y(), v.z()); }
+
+py::dict reading(const talus::run::WallReading& w) {
+  py::dict d;
+  d["name"] = w.name;
+  d["force"] = tuple3(w.force);
+  d["torque"] = tuple3(w.torque);
+  d["displacement"] = tuple3(w.displacement);
+  d["velocity"] = tuple3(w.velocity);
+  d["pressure"] = w.pressure;
+  d["servo_pressure"] = w.servo_pressure;
+  d["servo_speed"] = w.servo_speed;
+  d["servo_area"] = w.servo_area;
+  return d;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_talus, m) {
@@ -121,6 +145,24 @@ PYBIND11_MODULE(_talus, m) {
       .def_property_readonly("time_step",
                              [](const RunSession& s) { return s.simulation().time_step(); })
       .def_property_readonly("done", &RunSession::done)
+      .def_property_readonly("reorders",
+                             [](const RunSession& s) { return s.simulation().reorders(); })
+      .def("checkpoint", &RunSession::checkpoint)
+      .def("resolved_json", [](RunSession& s) { return s.resolved().dump(); })
+      .def("walls",
+           [](const RunSession& s) {
+             py::list out;
+             for (const auto& w : s.walls()) out.append(reading(w));
+             return out;
+           })
+      .def(
+          "set_wall_velocity",
+          [](RunSession& s, const std::string& name, const std::vector<double>& v) {
+            s.set_wall_velocity(name, vector3(v, ("wall '" + name + "': velocity").c_str()));
+          },
+          py::arg("name"), py::arg("velocity"))
+      .def("set_wall_servo", &RunSession::set_wall_servo, py::arg("name"), py::arg("pressure"),
+           py::arg("speed"), py::arg("area"))
       .def_property_readonly("finished", &RunSession::finished)
       .def_property_readonly("out", [](const RunSession& s) { return s.out().string(); })
       .def("arrays",

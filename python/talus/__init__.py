@@ -19,8 +19,8 @@ import os
 from . import _talus
 from ._talus import InputError, RunError, __version__
 
-__all__ = ["Run", "RunData", "Scenario", "InputError", "RunError", "load_scenario", "read_run",
-           "run", "validate"]
+__all__ = ["Run", "RunData", "Scenario", "Wall", "InputError", "RunError", "load_scenario",
+           "read_run", "run", "validate"]
 
 
 def _toml_value(value, key):
@@ -108,6 +108,45 @@ def validate(scenario, overrides=None, allow_long_run=False):
     return scenario.validate(allow_long_run)
 
 
+class Wall:
+    """One wall of a DEM run, read when Run.walls() was called, and the handle
+    that changes its motion from the run's current time on.
+
+    Readings (numpy arrays of 3 components, SI; per metre of depth in 2D):
+    force (what the particles exert on it, N), torque (about its pivot),
+    displacement (of its pivot since t = 0, m), velocity (of its pivot now,
+    m/s), pressure (normal force over the servo area, Pa; 0 without a servo),
+    servo = (pressure, speed, area) of its servo ((0, ...) when off). They are
+    copies: call Run.walls() again after stepping."""
+
+    def __init__(self, run, reading):
+        import numpy
+        self._run, self.name = run, reading["name"]
+        for key in ("force", "torque", "displacement", "velocity"):
+            setattr(self, key, numpy.array(reading[key]))
+        self.pressure = reading["pressure"]
+        self.servo = (reading["servo_pressure"], reading["servo_speed"], reading["servo_area"])
+
+    def set_velocity(self, velocity):
+        """From now on the wall translates at `velocity` (2 or 3 numbers, m/s)
+        with no end, from where it stands. InputError for a rotating wall or a
+        speed the time step was not chosen for (the scenario's rule)."""
+        self._run._session.set_wall_velocity(self.name, [float(c) for c in velocity])
+
+    def set_servo(self, pressure, speed=None, area=None):
+        """From now on a servo holds `pressure` (Pa) on this plane wall,
+        moving along its normal at up to `speed` (m/s), the pressure being the
+        normal force over `area` (m^2; m in 2D). speed and area default to the
+        servo's present ones. pressure=0 turns the servo off: the wall stays
+        where the servo left it."""
+        speed = self.servo[1] if speed is None else speed
+        area = self.servo[2] if area is None else area
+        self._run._session.set_wall_servo(self.name, float(pressure), float(speed), float(area))
+
+    def __repr__(self):
+        return f"Wall({self.name!r}, force={self.force.tolist()}, displacement={self.displacement.tolist()})"
+
+
 class Run:
     """One run of a scenario file, driven from Python.
 
@@ -181,10 +220,35 @@ class Run:
     def arrays(self):
         """The method's state as numpy arrays without copies, by name (see
         units()). DEM: x, v, w, f, r, m, id (v and w writable: a change acts
-        on the next step); fv2d: h, hu, hv, elevation; two-phase: hs, hsu,
+        on the next step), wall_force, wall_torque (a row per wall, in the
+        order of walls()); fv2d: h, hu, hv, elevation; two-phase: hs, hsu,
         hsv, hf, hfu, hfv, elevation (grids as [row from north, column from
-        west], like the .npy maps); read-only elsewhere. A view is valid until the next step."""
+        west], like the .npy maps); read-only elsewhere. A view is valid
+        until the next step."""
         return self._session.arrays()
+
+    def walls(self):
+        """The run's walls by name (DEM; {} for other methods): readings now and
+        handles that change their motion (see Wall). A change is a line in
+        log.txt and goes into checkpoints, so a resumed run keeps it."""
+        return {w["name"]: Wall(self, w) for w in self._session.walls()}
+
+    reorders = property(lambda self: self._session.reorders,
+                        doc="times the rows of arrays() were reordered or removed since t = 0 "
+                            "(DEM: each neighbour build sorts the particles by cell); while "
+                            "it stays the same, row i is the same particle")
+
+    def resolved(self):
+        """What the method chose, as summary.json's "resolved" will say: the
+        time step, the threads; for grids the transform of arrays() (cells_x,
+        cells_y, cell_size_m, x_west, y_north: row 0 is the northern row)."""
+        return json.loads(self._session.resolved_json())
+
+    def checkpoint(self):
+        """Writes the run's checkpoint now, on a series row: series.csv gets
+        a row at this time unless one falls here. InputError once complete.
+        talus.Run(resume=run.out) continues from the latest checkpoint."""
+        self._session.checkpoint()
 
     def units(self):
         """The SI unit of each array of arrays()."""

@@ -57,3 +57,32 @@ def test_friction_study_gives_shorter_runout_for_more_friction(tmp_path):
     assert os.path.getsize(tmp_path / "study.png") > 10000
     with open(tmp_path / "study.csv") as f:
         assert len(f.read().strip().split("\n")) == 3
+
+
+def test_triaxial_two_stage_changes_the_walls_between_the_stages(tmp_path):
+    tri = example("triaxial_two_stage")
+    r = tri.main(["--out", str(tmp_path), "--strain", "0.03"])
+    # Stage 1: the six servos set from Python settle at p0 (measured: 19999.6 to
+    # 20000.1 Pa; the bound leaves room for another packing).
+    assert len(r["consolidated_pressures"]) == 6
+    for p in r["consolidated_pressures"].values():
+        assert p == pytest.approx(2e4, rel=1e-3)
+    # Stage 2: the top wall moves at the speed the script set, exactly.
+    assert r["top_speed_in_shear"] == pytest.approx(0.01, rel=1e-9)
+    assert 0.03 <= r["axial_strain"] < 0.031  # the callback ended the run there
+    # The side servos hold p0 up to a proportional controller's lag behind the
+    # dilating sample (measured +0.6 % to +3.8 %).
+    low, high = r["lateral_stress_in_shear"]
+    assert 0.99 * 2e4 < low and high < 1.06 * 2e4
+    # A plausibility band, not a validation: the mobilised friction of spheres
+    # with mu = 0.5 after 3 % axial strain (measured sin(phi) = 0.51, 31 deg).
+    assert 0.3 < r["final_sin_phi"] < 0.7
+    with open(tmp_path / "triaxial.csv") as f:
+        lines = f.read().strip().split("\n")
+    assert lines[0].startswith("time,stage,side_x") and len(lines) > 50
+    assert os.path.getsize(tmp_path / "triaxial.png") > 10000
+    with open(os.path.join(r["folder"], "log.txt")) as f:
+        log = f.read()
+    assert log.count("servo holds 20000 Pa") == 6 and "wall 'top' translates at" in log
+    with open(os.path.join(r["folder"], "summary.json")) as f:
+        assert json.load(f)["status"] == "stopped"

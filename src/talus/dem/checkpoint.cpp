@@ -13,7 +13,9 @@ constexpr const char* kMagic = "talus-dem-checkpoint";
 // 5: the critical step, its reference speed and the settling time (a resume
 // no longer places the particles it would compute them from).
 // 6: the work each wall has done, the kinetic energy removed particles took along.
-constexpr int32_t kVersion = 6;
+// 7: the walls' translation and servo settings, which a caller may change
+// during the run (the Python API), and the translation they replaced.
+constexpr int32_t kVersion = 7;
 
 struct PairIndex {
   int32_t i, j;
@@ -102,6 +104,10 @@ void save_checkpoint(const DemSystem<D>& s, const std::filesystem::path& path) {
   for (const auto& wall : s.walls) {
     w.put(wall.force), w.put(wall.torque), w.put(wall.impulse), w.put(wall.work);
     w.put(wall.servo_travel), w.put(wall.servo_speed);
+    const auto& m = wall.motion;
+    w.put(wall.shift), w.put(m.velocity), w.put(m.move_start), w.put(m.move_stop);
+    w.put(wall.servo_normal), w.put(m.servo_pressure), w.put(m.servo_area), w.put(m.servo_speed);
+    w.put(m.servo_stop);
   }
   for (const auto& mb : s.membranes) {
     w.put(mb.name);
@@ -151,6 +157,10 @@ void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
   for (auto& wall : s.walls) {
     r.get(wall.force), r.get(wall.torque), r.get(wall.impulse), r.get(wall.work);
     r.get(wall.servo_travel), r.get(wall.servo_speed);
+    auto& m = wall.motion;
+    r.get(wall.shift), r.get(m.velocity), r.get(m.move_start), r.get(m.move_stop);
+    r.get(wall.servo_normal), r.get(m.servo_pressure), r.get(m.servo_area), r.get(m.servo_speed);
+    r.get(m.servo_stop);
   }
   for (auto& mb : s.membranes) {
     const auto name = r.get<std::string>();

@@ -22,7 +22,7 @@ bool moving_at(const WallMotionParams& m, double t) { return t >= m.move_start &
 }  // namespace
 
 Vec3 Wall::displacement(double t) const {
-  Vec3 d = motion.velocity * moving_time(motion, t) + servo_travel * servo_normal;
+  Vec3 d = shift + motion.velocity * moving_time(motion, t) + servo_travel * servo_normal;
   if (motion.amplitude != 0) {
     d += motion.amplitude * std::sin(2 * M_PI * motion.frequency * t + motion.phase) *
          motion.direction.normalized();
@@ -38,7 +38,45 @@ bool Wall::moves() const {
   const bool translates = motion.velocity != Vec3::Zero() && motion.move_stop > motion.move_start;
   const bool rotates =
       motion.angular_velocity != Vec3::Zero() && motion.move_stop > motion.move_start;
-  return translates || rotates || motion.amplitude != 0 || has_servo();
+  // A wall a servo or a replaced velocity has moved stays moved.
+  const bool moved = servo_travel != 0.0 || shift != Vec3::Zero();
+  return translates || rotates || motion.amplitude != 0 || has_servo() || moved;
+}
+
+void Wall::set_velocity(const Vec3& v, double t) {
+  if (motion.angular_velocity != Vec3::Zero())
+    throw InputError(fmt::format(
+        "wall '{}' rotates: its translation cannot be changed during the run (the rotation "
+        "angle counts from the motion's start)",
+        name));
+  if (!v.allFinite()) throw InputError(fmt::format("wall '{}': velocity must be finite", name));
+  // displacement(t) is the same number before and after: shift takes the
+  // translation so far, and the new one has run for no time yet.
+  shift += motion.velocity * moving_time(motion, t);
+  motion.velocity = v;
+  motion.move_start = t;
+  motion.move_stop = kNever;
+}
+
+void Wall::set_servo(double pressure, double speed, double area) {
+  if (pressure == 0.0) {
+    motion.servo_pressure = 0.0;
+    servo_speed = 0.0;
+    return;
+  }
+  if (reference.size() != 1 || reference[0].kind != PrimitiveKind::Plane)
+    throw InputError(
+        fmt::format("wall '{}': a servo needs a plane wall (it moves along the normal)", name));
+  if (!(pressure > 0) || !(speed > 0) || !(area > 0) || !std::isfinite(pressure) ||
+      !std::isfinite(speed) || !std::isfinite(area))
+    throw InputError(fmt::format(
+        "wall '{}': a servo needs a finite pressure, speed and area > 0 (got {}, {}, {})", name,
+        pressure, speed, area));
+  servo_normal = reference[0].n;
+  motion.servo_pressure = pressure;
+  motion.servo_speed = speed;
+  motion.servo_area = area;
+  motion.servo_stop = kNever;
 }
 
 double Wall::servo_pressure_now() const {

@@ -52,6 +52,10 @@ struct Wall {
   // the particles) and the speed of the current step.
   Vec3 servo_normal = Vec3::UnitZ();
   double servo_travel = 0.0, servo_speed = 0.0;
+  // Translation under the velocities a caller has since replaced
+  // (set_velocity): state like servo_travel, so the wall goes on from where
+  // it stands.
+  Vec3 shift = Vec3::Zero();
 
   // Takes `force` into the extremes (the solver, once per closed step).
   void note_force() {
@@ -90,6 +94,16 @@ struct Wall {
   // False for a wall that never moves: update() is then a no-op.
   bool moves() const;
   bool has_servo() const { return motion.servo_pressure != 0.0; }
+  // Between steps (the Python API): from time t on, translate at v with no
+  // end; the translation so far moves into `shift`, so the wall does not jump.
+  // Throws InputError for a wall with a rotation (its angle counts from
+  // move_start, which this resets).
+  void set_velocity(const Vec3& v, double t);
+  // Between steps: hold the pressure p (Pa) on a plane wall from now on,
+  // moving at up to `speed` (m/s), p measured over `area` (m^2); p = 0 turns
+  // the servo off and the wall stays where it is. Throws InputError for a wall
+  // that is not one plane or for p, speed, area not > 0.
+  void set_servo(double pressure, double speed, double area);
   // Pressure the particles exert on the wall, -force . servo_normal / servo_area.
   double servo_pressure_now() const;
   // The servo's step from t to t + dt (call before update(t + dt)), from the

@@ -40,6 +40,12 @@ void RunLoop::flush() {
   sim_.outputs().on_progress();
 }
 
+void RunLoop::checkpoint() {
+  if (sim_.time() != last_series_time_) series();
+  for (auto* o : observers_) o->on_checkpoint();
+  sim_.outputs().on_checkpoint();
+}
+
 void RunLoop::series() {
   for (auto* o : observers_) o->on_series();
   sim_.outputs().on_series();

@@ -38,6 +38,9 @@ class RunLoop {
   // Flushes every observer's files (what on_progress flushes), for a run
   // its caller ends before the end.
   void flush();
+  // Writes a checkpoint now, between two advances, as at a scheduled one: on
+  // a series row, which is written first unless there is one at this time.
+  void checkpoint();
   // Everything this loop has done so far.
   const RunStats& stats() const { return total_; }
 

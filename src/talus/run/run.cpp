@@ -100,6 +100,8 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
   const Method& method = method_for(file);
   if (resume_ && !method.checkpoints)
     throw InputError(out_.string() + ": " + method.name + " runs write no checkpoints to resume");
+  writes_checkpoints_ = method.checkpoints;
+  method_name_ = method.name;
   ctx_ = RunContext{out_, req.threads, resume_};
   // Held until the session ends: the lock, then the record of talus's files.
   if (resume_)
@@ -177,11 +179,7 @@ void RunSession::fail(const std::exception& e) {
 RunStats RunSession::advance(double until, std::int64_t steps) {
   if (finished_) throw InputError(out_.string() + ": this run is finished; it cannot be advanced");
   try {
-    if (!started_) {
-      started_ = true;
-      loop_t0_ = std::chrono::steady_clock::now();
-      loop_->start(!resume_);
-    }
+    begin();
     return loop_->advance(std::min(until, sim_->end_time()), steps);
   } catch (const std::exception& e) {
     fail(e);
@@ -189,12 +187,98 @@ RunStats RunSession::advance(double until, std::int64_t steps) {
   }
 }
 
+void RunSession::begin() {
+  if (started_) return;
+  started_ = true;
+  loop_t0_ = std::chrono::steady_clock::now();
+  loop_->start(!resume_);
+}
+
 RunStats RunSession::run_to_end() { return advance(sim_->end_time(), -1); }
+
+void RunSession::checkpoint() {
+  if (finished_) throw InputError(out_.string() + ": this run is finished");
+  if (!writes_checkpoints_)
+    throw InputError(out_.string() + ": " + method_name_ + " runs write no checkpoints to resume");
+  try {
+    begin();
+    if (loop_->done())
+      throw InputError(out_.string() + ": the run is complete; a checkpoint would resume nothing");
+    loop_->checkpoint();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(e);
+    throw;
+  }
+  log_->note(fmt::format("t = {:.6g} s: checkpoint written (asked by the caller)", sim_->time()));
+}
+
+nlohmann::json RunSession::resolved() {
+  if (!finished_) {
+    try {
+      begin();
+    } catch (const std::exception& e) {
+      fail(e);
+      throw;
+    }
+  }
+  return sim_->report().resolved;
+}
+
+WallControl& RunSession::walls_of_method() const {
+  WallControl* w = sim_->wall_control();
+  if (!w) throw InputError(out_.string() + ": this method has no walls to read or drive");
+  return *w;
+}
+
+std::size_t RunSession::wall_index(const std::string& name) const {
+  const auto walls = walls_of_method().walls();
+  std::string names;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    if (walls[k].name == name) return k;
+    names += (k ? ", '" : "'") + walls[k].name + "'";
+  }
+  throw InputError(fmt::format("no wall '{}' (the run's walls: {})", name, names));
+}
+
+std::vector<WallReading> RunSession::walls() const {
+  return sim_->wall_control() ? sim_->wall_control()->walls() : std::vector<WallReading>{};
+}
+
+void RunSession::set_wall_velocity(const std::string& name, const Vec3& v) {
+  if (finished_) throw InputError(out_.string() + ": this run is finished");
+  walls_of_method().set_velocity(wall_index(name), v);
+  log_->note(
+      fmt::format("t = {:.6g} s: wall '{}' translates at ({:.6g}, {:.6g}, {:.6g}) m/s "
+                  "(set by the caller)",
+                  sim_->time(), name, v.x(), v.y(), v.z()));
+}
+
+void RunSession::set_wall_servo(const std::string& name, double pressure, double speed,
+                                double area) {
+  if (finished_) throw InputError(out_.string() + ": this run is finished");
+  const std::size_t k = wall_index(name);
+  const auto before = walls_of_method().walls()[k];
+  walls_of_method().set_servo(k, pressure, speed, area);
+  // A servo turned on, off or to another pressure or speed; not an area that
+  // follows the sample (which a script may change every few steps).
+  if (before.servo_pressure == pressure && (pressure == 0.0 || before.servo_speed == speed)) return;
+  log_->note(pressure == 0.0 ? fmt::format("t = {:.6g} s: wall '{}': servo off (set by the caller)",
+                                           sim_->time(), name)
+                             : fmt::format("t = {:.6g} s: wall '{}': servo holds {:.6g} Pa over "
+                                           "{:.6g} m^2 at up to {:.6g} m/s (set by the caller)",
+                                           sim_->time(), name, pressure, area, speed));
+}
 
 RunResult RunSession::finish() {
   if (finished_) throw InputError(out_.string() + ": this run is already finished");
-  const bool done = started_ && loop_->done();
+  bool done = false;
   try {
+    // A run finished before its first step starts all the same: the methods
+    // set up their report there, and its outputs then hold the start state.
+    begin();
+    done = loop_->done();
     if (done)
       for (auto& e : experiments_) summary_.experiments[e->name()] = e->finish();
     else

@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "talus/run/experiment.hpp"
@@ -36,6 +38,18 @@ class RunSession {
   // summary.json as "failed" and is rethrown; the session is then finished.
   RunStats advance(double until, std::int64_t steps);
   RunStats run_to_end();
+  // Writes the checkpoint a resume continues from, now (the method must write
+  // checkpoints; InputError once the run is done: there is nothing to resume).
+  void checkpoint();
+  // The walls (DEM): readings, and motion changed from now on, by name; each
+  // change is a line in log.txt. InputError for an unknown wall or a method
+  // without walls, or a change the wall cannot take (wall_control.hpp).
+  std::vector<WallReading> walls() const;
+  // What the method chose (time step, grid and its transform, threads):
+  // summary.json's "resolved", known from the start (which it makes happen).
+  nlohmann::json resolved();
+  void set_wall_velocity(const std::string& name, const Vec3& v);
+  void set_wall_servo(const std::string& name, double pressure, double speed, double area);
   // The run reached its end time or the method stopped (at rest).
   bool done() const { return loop_->done(); }
   bool finished() const { return finished_; }
@@ -51,10 +65,15 @@ class RunSession {
  private:
   void fill(const char* status, const std::string& error);
   void fail(const std::exception& e);
+  void begin();  // the loop's start, before the first advance or checkpoint
+  WallControl& walls_of_method() const;
+  std::size_t wall_index(const std::string& name) const;
 
   RunRequest request_;
   std::filesystem::path out_;
   bool resume_ = false;
+  bool writes_checkpoints_ = false;
+  std::string method_name_;
   RunContext ctx_;
   std::optional<OutputFolder> folder_;
   std::unique_ptr<Simulation> sim_;

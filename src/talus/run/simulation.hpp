@@ -11,6 +11,7 @@
 
 #include "talus/run/observer.hpp"
 #include "talus/run/schedule.hpp"
+#include "talus/run/wall_control.hpp"
 
 namespace talus::run {
 
@@ -93,6 +94,13 @@ class Simulation {
   virtual MethodReport report() const = 0;
   // The state's arrays (none where a method shows none yet).
   virtual std::vector<StateArray> state_arrays() { return {}; }
+  // How many times the method has reordered or removed rows of its state
+  // arrays since the run began (a DEM neighbour build sorts the particles
+  // by cell): while it stays the same, row i is the same particle.
+  virtual std::int64_t reorders() const { return 0; }
+  // The walls a caller may read and drive between steps; null for a method
+  // without walls.
+  virtual WallControl* wall_control() { return nullptr; }
 };
 
 }  // namespace talus::run

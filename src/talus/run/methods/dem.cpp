@@ -173,13 +173,46 @@ std::vector<StateArray> DemSimulation<D>::state_arrays() {
   const std::size_t n = p.size();
   using T = StateArray::Type;
   const std::vector<std::size_t> vec{n, D}, scalar{n};
-  return {{"x", "m", T::Float64, p.x.data(), vec, false},
-          {"v", "m/s", T::Float64, p.v.data(), vec, true},
-          {"w", "rad/s", T::Float64, p.w.data(), spin == 1 ? scalar : vec, true},
-          {"f", "N", T::Float64, p.f.data(), vec, false},
-          {"r", "m", T::Float64, p.r.data(), scalar, false},
-          {"m", "kg", T::Float64, p.m.data(), scalar, false},
-          {"id", "", T::Int64, p.id.data(), scalar, false}};
+  std::vector<StateArray> out{
+      {"x", "m", T::Float64, p.x.data(), vec, false},
+      {"v", "m/s", T::Float64, p.v.data(), vec, true},
+      {"w", "rad/s", T::Float64, p.w.data(), spin == 1 ? scalar : vec, true},
+      {"f", D == 2 ? "N/m" : "N", T::Float64, p.f.data(), vec, false},
+      {"r", "m", T::Float64, p.r.data(), scalar, false},
+      {"m", D == 2 ? "kg/m" : "kg", T::Float64, p.m.data(), scalar, false},
+      {"id", "", T::Int64, p.id.data(), scalar, false}};
+  // The walls' forces and torques: fields of the walls' structs, so strided
+  // (one row per wall; in 2D the force's x, y and the torque's z).
+  auto& walls = run_.system.walls;
+  if (!walls.empty()) {
+    const auto row = static_cast<std::ptrdiff_t>(sizeof(geometry::Wall));
+    const auto item = static_cast<std::ptrdiff_t>(sizeof(double));
+    const std::size_t nw = walls.size();
+    out.push_back({"wall_force",
+                   D == 2 ? "N/m" : "N",
+                   T::Float64,
+                   walls[0].force.data(),
+                   std::vector<std::size_t>{nw, D},
+                   false,
+                   {row, item}});
+    if (D == 2)
+      out.push_back({"wall_torque",
+                     "N",
+                     T::Float64,
+                     walls[0].torque.data() + 2,
+                     std::vector<std::size_t>{nw},
+                     false,
+                     {row}});
+    else
+      out.push_back({"wall_torque",
+                     "N m",
+                     T::Float64,
+                     walls[0].torque.data(),
+                     std::vector<std::size_t>{nw, 3},
+                     false,
+                     {row, item}});
+  }
+  return out;
 }
 
 template <int D>

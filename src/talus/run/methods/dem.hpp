@@ -29,7 +29,7 @@ struct DemControl {
 DemControl dem_control(const dem::DemScenario& scenario);
 
 template <int D>
-class DemSimulation : public Simulation {
+class DemSimulation : public Simulation, public WallControl {
  public:
   // Steps `run` (owned by the caller) without writing files.
   DemSimulation(dem::DemRun<D>& run, DemControl control);
@@ -59,6 +59,12 @@ class DemSimulation : public Simulation {
   // Positions, velocities (writable), angular velocities (writable), forces,
   // radii, masses and ids of the particles, in their current order.
   std::vector<StateArray> state_arrays() override;
+  // Each neighbour build sorts the particles by cell (and drops escaped ones).
+  std::int64_t reorders() const override { return run_.system.neighbours.builds; }
+  WallControl* wall_control() override { return this; }
+  std::vector<WallReading> walls() const override;
+  void set_velocity(std::size_t wall, const Vec3& v) override;
+  void set_servo(std::size_t wall, double pressure, double speed, double area) override;
 
   dem::DemRun<D>& dem_run() { return run_; }
   const dem::DemRun<D>& dem_run() const { return run_; }
@@ -67,6 +73,10 @@ class DemSimulation : public Simulation {
 
  private:
   std::int64_t step_reaching(double t) const;
+  geometry::Wall& wall_to_change(std::size_t wall);
+  // A wall moving at `speed` must not press a particle deeper than the
+  // smallest radius within one critical step (the builder's rule at t = 0).
+  void check_wall_speed(const geometry::Wall& wall, double speed) const;
 
   std::unique_ptr<dem::DemRun<D>> owned_;
   dem::DemRun<D>& run_;
