@@ -3,100 +3,42 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
-#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "calibrate_trial.hpp"
 #include "commands.hpp"
 #include "talus/core/error.hpp"
 #include "talus/run/output_folder.hpp"
-#include "talus/scenario/scenario.hpp"
 
 namespace fs = std::filesystem;
 
 namespace talus::app {
 
+using namespace calibration;
+
 namespace {
 
-struct Target {
-  std::string metric;
-  double value = 0.0;
-};
-
-Target parse_target(const std::string& text) {
-  const auto eq = text.find('=');
-  Target t;
-  if (eq == std::string::npos || eq == 0)
+// The grid form: one run per trial value of one parameter.
+int sweep(const CalibrateOptions& opt) {
+  if (opt.parameter.empty() || opt.values.empty())
     throw InputError(
-        fmt::format("--target '{}': expected metric=value, e.g. dam_break.gamma_3=21.562", text));
-  t.metric = text.substr(0, eq);
-  try {
-    std::size_t used = 0;
-    t.value = std::stod(text.substr(eq + 1), &used);
-    if (used != text.size() - eq - 1) throw std::invalid_argument("trailing");
-  } catch (const std::exception&) {
-    throw InputError(fmt::format("--target '{}': '{}' is not a number", text, text.substr(eq + 1)));
-  }
-  return t;
-}
-
-// A dotted path ("dam_break.gamma_3") into summary.json.
-double metric(const nlohmann::json& summary, const std::string& path, const fs::path& file) {
-  std::string pointer = "/" + path;
-  for (char& c : pointer) c = c == '.' ? '/' : c;
-  const nlohmann::json::json_pointer p(pointer);
-  if (!summary.contains(p) || !summary.at(p).is_number())
-    throw RunError(
-        fmt::format("{}: no number at '{}' (a metric is a dotted path to a number in "
-                    "summary.json)",
-                    file.string(), path));
-  return summary.at(p).get<double>();
-}
-
-}  // namespace
-
-int calibrate_command(const CalibrateOptions& given) {
-  CalibrateOptions opt = given;
-  opt.file = resolve_scenario(given.file);
-  if (opt.values.empty()) throw InputError("talus calibrate: --values needs at least one value");
-  if (opt.targets.empty())
-    throw InputError("talus calibrate: --target needs at least one metric=value");
-  std::vector<Target> targets;
-  for (const auto& t : opt.targets) targets.push_back(parse_target(t));
+        "talus calibrate: give -p KEY --values v1,v2,... (grid sweep) or --param "
+        "KEY=LO:HI[:START] (optimiser)");
+  const auto targets = parse_targets(opt.targets);
   // Every trial must be valid before anything runs.
-  for (double v : opt.values) {
-    auto sets = opt.sets;
-    sets.push_back(fmt::format("{}={}", opt.parameter, v));
-    const auto file = io::load_scenario_file(opt.file, sets);
-    if (file.method == "dem") io::parse_dem_scenario(file);
-  }
-  const fs::path out = opt.out.empty()
-                           ? fs::path("runs") / ("calibrate-" + fs::path(opt.file).stem().string())
-                           : fs::path(opt.out);
+  for (double v : opt.values) validate_trial(opt, {{opt.parameter, v}});
+  const fs::path out = output_path(opt);
   // Held to the end: the lock, then the record of what talus wrote there.
   const auto folder = run::OutputFolder::claim(out, opt.force);
 
   std::vector<std::vector<double>> measured(opt.values.size());
   std::vector<double> deviation(opt.values.size(), 0.0);
   for (std::size_t k = 0; k < opt.values.size(); ++k) {
-    RunOptions run;
-    run.file = opt.file;
-    run.out = (out / fmt::format("run_{:02d}", k)).string();
-    run.sets = opt.sets;
-    run.sets.push_back(fmt::format("{}={}", opt.parameter, opt.values[k]));
-    run.threads = opt.threads;
-    run.force = true;
-    run.quiet = true;
     if (!opt.quiet)
       fmt::print(stderr, "talus calibrate: {} = {} ...\n", opt.parameter, opt.values[k]);
-    run_command(run);
-    nlohmann::json summary;
-    std::ifstream(fs::path(run.out) / "summary.json") >> summary;
-    for (const auto& t : targets) {
-      measured[k].push_back(metric(summary, t.metric, fs::path(run.out) / "summary.json"));
-      deviation[k] += std::abs(measured[k].back() - t.value);
-    }
+    measured[k] = run_trial(opt, out, k, {{opt.parameter, opt.values[k]}}, targets);
+    deviation[k] = objective(measured[k], targets, false);
   }
   std::size_t best = 0;
   for (std::size_t k = 1; k < deviation.size(); ++k) {
@@ -147,10 +89,27 @@ int calibrate_command(const CalibrateOptions& given) {
       }
     }
   }
-  std::ofstream(out / "calibration.md") << md;
-  std::ofstream(out / "calibration.json") << j.dump(2) << "\n";
-  fmt::print("{}\nresults: {}\n", md, (out / "calibration.md").string());
+  write_results(out, md, j.dump(2));
   return 0;
+}
+
+}  // namespace
+
+int calibrate_command(const CalibrateOptions& given) {
+  CalibrateOptions opt = given;
+  opt.file = resolve_scenario(given.file);
+  if (opt.params.empty()) {
+    if (!opt.optimizer.empty() || !opt.objective.empty() || opt.max_evals > 0 || opt.xtol > 0)
+      throw InputError(
+          "talus calibrate: --optimizer, --objective, --max-evals and --xtol are for the "
+          "optimiser (--param); the grid sweep reports the sum of absolute deviations");
+    return sweep(opt);
+  }
+  if (!opt.parameter.empty() || !opt.values.empty())
+    throw InputError(
+        "talus calibrate: -p/--values (grid sweep) and --param (optimiser) are two forms; give "
+        "one");
+  return optimize(opt);
 }
 
 }  // namespace talus::app

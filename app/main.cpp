@@ -66,12 +66,30 @@ int main(int argc, char** argv) {
   cmp_cmd->add_flag("--quiet,-q", cmp.quiet, "no progress on stderr");
   CalibrateOptions cal;
   auto* cal_cmd = cli.add_subcommand(
-      "calibrate", "fit one parameter to measured numbers by running the scenario per trial value");
+      "calibrate",
+      "fit parameters to measured numbers: a grid of trial values of one, or a bounded optimiser "
+      "over several");
   cal_cmd->add_option("file", cal.file, "scenario file")->required();
-  cal_cmd->add_option("--parameter,-p", cal.parameter, "the key to vary, as for --set")->required();
-  cal_cmd->add_option("--values", cal.values, "trial values (comma separated)")
-      ->required()
+  cal_cmd->add_option("--parameter,-p", cal.parameter, "grid: the key to vary, as for --set");
+  cal_cmd->add_option("--values", cal.values, "grid: trial values (comma separated)")
       ->delimiter(',');
+  cal_cmd->add_option("--param", cal.params,
+                      "optimiser: KEY=LO:HI[:START], a --set key and its bounds (repeatable)");
+  cal_cmd
+      ->add_option("--optimizer", cal.optimizer,
+                   "optimiser: NLopt's bobyqa (default), sbplx, neldermead or cobyla")
+      ->check(CLI::IsMember({"bobyqa", "sbplx", "neldermead", "cobyla"}));
+  cal_cmd->add_option("--max-evals", cal.max_evals, "optimiser: most runs (default 40)")
+      ->check(CLI::PositiveNumber);
+  cal_cmd
+      ->add_option("--xtol", cal.xtol,
+                   "optimiser: stop when a step moves every parameter by less than this fraction "
+                   "of its range (default 1e-3)")
+      ->check(CLI::PositiveNumber);
+  cal_cmd
+      ->add_option("--objective", cal.objective,
+                   "optimiser: squares (sum of squared deviations, default) or abs")
+      ->check(CLI::IsMember({"squares", "abs"}));
   cal_cmd
       ->add_option("--target", cal.targets,
                    "metric=value: a dotted path in summary.json and its measured value "
