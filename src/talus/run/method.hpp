@@ -44,8 +44,9 @@ struct Method {
   std::function<Validation(const io::ScenarioFile&)> validate;
   // A fresh run writes the resolved scenario (scenario.toml) into ctx.out and
   // builds; a resumed one builds from it and restores checkpoint.bin.
+  // Every method writes checkpoints (its outputs' on_checkpoint) and resumes
+  // from them: the run layer offers --resume and checkpoint() for all.
   std::function<std::unique_ptr<Simulation>(const io::ScenarioFile&, const RunContext&)> create;
-  bool checkpoints = true;  // whether a run can be resumed
 };
 
 // "file:line: [table] 'key'" (without the line when the key is not in the

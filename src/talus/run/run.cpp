@@ -98,10 +98,6 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
     throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
                      "`");
   const Method& method = method_for(file);
-  if (resume_ && !method.checkpoints)
-    throw InputError(out_.string() + ": " + method.name + " runs write no checkpoints to resume");
-  writes_checkpoints_ = method.checkpoints;
-  method_name_ = method.name;
   ctx_ = RunContext{out_, req.threads, resume_};
   // Held until the session ends: the lock, then the record of talus's files.
   if (resume_)
@@ -198,8 +194,6 @@ RunStats RunSession::run_to_end() { return advance(sim_->end_time(), -1); }
 
 void RunSession::checkpoint() {
   if (finished_) throw InputError(out_.string() + ": this run is finished");
-  if (!writes_checkpoints_)
-    throw InputError(out_.string() + ": " + method_name_ + " runs write no checkpoints to resume");
   try {
     begin();
     if (loop_->done())

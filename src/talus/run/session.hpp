@@ -38,8 +38,8 @@ class RunSession {
   // summary.json as "failed" and is rethrown; the session is then finished.
   RunStats advance(double until, std::int64_t steps);
   RunStats run_to_end();
-  // Writes the checkpoint a resume continues from, now (the method must write
-  // checkpoints; InputError once the run is done: there is nothing to resume).
+  // Writes the checkpoint a resume continues from, now (InputError once the
+  // run is done: there is nothing to resume).
   void checkpoint();
   // The walls (DEM): readings, and motion changed from now on, by name; each
   // change is a line in log.txt. InputError for an unknown wall or a method
@@ -72,8 +72,6 @@ class RunSession {
   RunRequest request_;
   std::filesystem::path out_;
   bool resume_ = false;
-  bool writes_checkpoints_ = false;
-  std::string method_name_;
   RunContext ctx_;
   std::optional<OutputFolder> folder_;
   std::unique_ptr<Simulation> sim_;
