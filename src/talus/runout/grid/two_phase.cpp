@@ -201,8 +201,12 @@ double TwoPhaseSolver::stable_time_step() const {
   const Index n = static_cast<Index>(g.cells());
   const double dry = p_.dry_depth, grav = p_.drag.gravity;
   double rate = 0.0;
+  // The largest solid fraction under fluid: Julien-O'Brien's viscosity
+  // alpha e^(beta alpha_s) (alpha > 0, beta >= 0) is largest there, so one
+  // exp gives the same bits as the largest of every cell's.
+  double solid_max = -1.0;
   bool wet = false;
-#pragma omp parallel for schedule(static) reduction(max : rate) reduction(|| : wet)
+#pragma omp parallel for schedule(static) reduction(max : rate, solid_max) reduction(|| : wet)
   for (Index c = 0; c < n; ++c) {
     const double hs = s_.hs[c], hf = s_.hf[c];
     if (hs + hf <= dry) continue;
@@ -211,23 +215,20 @@ double TwoPhaseSolver::stable_time_step() const {
     if (hs > dry)
       rate = std::max(
           rate, (std::abs(s_.hsu[c] / hs) + a) / g.dx + (std::abs(s_.hsv[c] / hs) + a) / g.dy);
-    if (hf > dry)
+    if (hf > dry) {
       rate = std::max(
           rate, (std::abs(s_.hfu[c] / hf) + a) / g.dx + (std::abs(s_.hfv[c] / hf) + a) / g.dy);
+      solid_max = std::max(solid_max, hs / (hs + hf));
+    }
   }
   if (!wet) return kInf;
   // As fv2d: still material set moving by gravity crosses at most `courant` of a cell.
   const double from_rest = std::sqrt(p_.courant * std::min(g.dx, g.dy) / grav);
   double dt = rate > 0.0 ? std::min(p_.courant / rate, from_rest) : from_rest;
-  if (lateral_viscosity()) {  // the explicit lateral stress (two_phase_viscous.hpp)
-    double nu_max = 0.0;
-    for (Index c = 0; c < n; ++c)
-      if (s_.hf[c] > dry) {
-        const double h = s_.hs[c] + s_.hf[c];
-        nu_max = std::max(nu_max, two_phase::julien_obrien_viscosity(
-                                      p_.viscosity_alpha, p_.viscosity_beta, s_.hs[c] / h));
-      }
-    nu_max /= p_.drag.fluid_density;
+  if (lateral_viscosity() && solid_max >= 0.0) {  // the explicit lateral stress
+    const double nu_max =
+        two_phase::julien_obrien_viscosity(p_.viscosity_alpha, p_.viscosity_beta, solid_max) /
+        p_.drag.fluid_density;
     const double viscous = nu_max * (4.0 / (g.dx * g.dx) + 4.0 / (g.dy * g.dy));
     if (viscous > 0.0) dt = std::min(dt, p_.courant / viscous);
   }
