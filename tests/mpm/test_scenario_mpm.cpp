@@ -86,6 +86,45 @@ TEST(MpmScenario, BadInputNamesFileLineAndKey) {
   expect_error(edit(kBase, "x_min = \"fixed\"", "x_min = \"sticky\""), "'x_min'");
 }
 
+// A Coulomb grid face: y_min = { friction = mu } next to the named kinds;
+// it reads back from the resolved file and builds; a negative or non-number
+// mu, a mu-less "friction" and a bare number are refused naming the key.
+TEST(MpmScenario, FrictionFaceParsesRoundTripsAndRefusesBadMu) {
+  const std::string text =
+      edit(edit(kBase, "y_min = \"fixed\"", "y_min = { friction = 0.3 }, x_max = \"roller\""),
+           "shape = \"cubic_bspline\"", "shape = \"gimp\"");
+  const auto sc = parse_mpm_scenario(load_scenario_text(text, "friction.toml"));
+  EXPECT_EQ(sc.grid.faces[0], mpm::BoundaryKind::Fixed);
+  EXPECT_EQ(sc.grid.faces[2], mpm::BoundaryKind::Friction);
+  EXPECT_EQ(sc.grid.friction[2], 0.3);
+  EXPECT_EQ(sc.grid.faces[3], mpm::BoundaryKind::Free);
+  const std::string resolved = mpm_scenario_to_toml(sc);
+  const auto again = parse_mpm_scenario(load_scenario_text(resolved, "resolved.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump()) << resolved;
+  EXPECT_EQ(again.grid.friction[2], 0.3);
+  const auto solver = mpm::build_mpm<2>(sc);
+  // The 25 nodes of y = 0 (20 cells of 0.05 m and 2 + 2 ghost columns), mu = 0.3.
+  ASSERT_EQ(solver.grid.friction_nodes.size(), 25u);
+  EXPECT_EQ(solver.grid.friction_nodes[0].mu, 0.3);
+  expect_error(edit(text, "friction = 0.3", "friction = -0.3"),
+               "bad.toml:11: [grid.boundaries.y_min] 'friction'");
+  expect_error(edit(text, "friction = 0.3", "friction = \"rough\""),
+               "[grid.boundaries.y_min] 'friction'");
+  expect_error(edit(text, "friction = 0.3", "mu = 0.3"), "'friction'");
+  expect_error(edit(text, "{ friction = 0.3 }", "\"friction\""), "'y_min'");
+  expect_error(edit(text, "{ friction = 0.3 }", "0.3"), "'y_min'");
+  expect_error(edit(text, "shape = \"gimp\"", "shape = \"cubic_bspline\""),
+               "[grid.boundaries] 'y_min': expected \"roller\"");
+  // The sea bed of the bundled bag made frictional from the command line, as
+  // docs/scenario-format.md shows.
+  const auto bag = parse_mpm_scenario(
+      load_scenario_file(std::string(TALUS_SOURCE_DIR) + "/scenarios/mpm/mpm_geotextile_bag.toml",
+                         {"grid.boundaries.y_min={friction = 0.5}"}));
+  EXPECT_EQ(bag.grid.faces[2], mpm::BoundaryKind::Friction);
+  EXPECT_EQ(bag.grid.friction[2], 0.5);
+  EXPECT_EQ(bag.grid.faces[0], mpm::BoundaryKind::Free);
+}
+
 const std::string kRigid = R"(
 [[rigid_bodies]]
 box = { min = [0.1, 0.3], max = [0.9, 0.35] }

@@ -149,8 +149,13 @@ Solver<D> build_mpm(const MpmScenario& sc) {
   using Vec = typename Space<D>::Vec;
   check_memory_need<D>(sc);
   std::array<BoundaryKind, 2 * D> faces;
-  for (int f = 0; f < 2 * D; ++f) faces[f] = sc.grid.faces[f];
-  Grid<D> grid(Space<D>::from3(sc.grid.lo), Space<D>::from3(sc.grid.hi), sc.grid.cell_size, faces);
+  std::array<double, 2 * D> friction;
+  for (int f = 0; f < 2 * D; ++f) {
+    faces[f] = sc.grid.faces[f];
+    friction[f] = sc.grid.friction[f];
+  }
+  Grid<D> grid(Space<D>::from3(sc.grid.lo), Space<D>::from3(sc.grid.hi), sc.grid.cell_size, faces,
+               friction);
   std::vector<Material> materials;
   for (MaterialParams m : sc.materials) {
     m.critical_volume_strain = critical_volume_strain(m, sc.grid.cell_size);

@@ -15,9 +15,10 @@ namespace talus::mpm {
 
 // What a face of the domain does to the nodes on and beyond it.
 enum class BoundaryKind {
-  Free,    // nothing
-  Roller,  // normal velocity zero, tangential free (frictionless wall)
-  Fixed    // all velocity components zero (rough, no-slip wall)
+  Free,     // nothing
+  Roller,   // normal velocity zero, tangential free (frictionless wall)
+  Fixed,    // all velocity components zero (rough, no-slip wall)
+  Friction  // Coulomb wall: see Grid::constrain_velocity
 };
 
 template <int D>
@@ -30,6 +31,7 @@ struct Grid {
   Vec origin;                               // position of node 0 (lo - kPad h)
   std::array<int, D> n{};                   // nodes per axis
   std::array<BoundaryKind, 2 * D> faces{};  // xmin, xmax, ymin, ymax, (zmin, zmax)
+  std::array<double, 2 * D> friction{};     // Coulomb mu of the Friction faces
 
   std::vector<double> mass;
   std::vector<Vec> momentum, force, velocity, velocity_old;
@@ -50,10 +52,26 @@ struct Grid {
     Vec sign;  // -1 for the components the wall stops, +1 for the others
   };
   std::vector<GhostPair> ghosts;
+  // Nodes on a Friction face (a node on two such faces is listed twice). A
+  // friction face is decided node by node and step by step: where the updated
+  // velocity points into the wall the node is in contact and the face acts as
+  // a roller plus Coulomb friction on the tangential velocity; elsewhere the
+  // node is free to leave the wall. Its ghosts mirror as a roller's.
+  struct FrictionNode {
+    std::int64_t node;
+    int axis;     // the face normal's axis
+    double into;  // +1 on a max face, -1 on a min face (v[axis] * into > 0: into the wall)
+    double mu;
+  };
+  std::vector<FrictionNode> friction_nodes;
+  // Per friction node: in contact at the last constrain_velocity.
+  std::vector<unsigned char> in_contact;
 
   Grid() = default;
-  // The domain is extended to a whole number of cells of size h.
-  Grid(const Vec& lo, const Vec& hi, double h, const std::array<BoundaryKind, 2 * D>& faces);
+  // The domain is extended to a whole number of cells of size h. friction:
+  // the Coulomb mu of the faces that are BoundaryKind::Friction.
+  Grid(const Vec& lo, const Vec& hi, double h, const std::array<BoundaryKind, 2 * D>& faces,
+       const std::array<double, 2 * D>& friction = {});
 
   std::int64_t nodes() const;
   std::int64_t index(const std::array<int, D>& i) const;
@@ -61,8 +79,22 @@ struct Grid {
   // Zeroes mass, momentum and force.
   void clear();
   // Applies the face constraints to a node velocity field: zeroes the stopped
-  // components on the faces and reflects the field onto the ghost nodes.
+  // components on the faces and reflects the field onto the ghost nodes. On a
+  // friction face it zeroes the normal component at the nodes in contact at
+  // the last constrain_velocity (the velocities before the update and the
+  // remapped ones of MUSL).
   void constrain(std::vector<Vec>& field) const;
+  // constrain for the updated velocity; first decides the contacts of the
+  // friction faces (Bardenhagen et al. 2000 against a wall at rest, mpm.md
+  // "Boundaries and contact"): at a node whose velocity points into the wall
+  // the normal component v_n goes, and the tangential one v_t loses
+  // min(|v_t|, mu |v_n|) (sticks when |v_t| <= mu |v_n|); a node moving
+  // away is left free.
+  // old, flip: the unconstrained velocities before the update and the FLIP
+  // share of the particle update; with them |v_n| above is the normal
+  // velocity change the particles feel, v_n - flip v_old,n.
+  void constrain_velocity(std::vector<Vec>& velocity, const std::vector<Vec>* old = nullptr,
+                          double flip = 0.0);
   // Adds what the particles put on ghost nodes to the mirror nodes.
   void fold(std::vector<double>& m, std::vector<Vec>& momentum, std::vector<Vec>* force) const;
 };

@@ -21,6 +21,7 @@ struct GridParams {
   double cell_size = 0.0;
   // xmin, xmax, ymin, ymax, zmin, zmax (the z pair unused in 2D)
   std::array<BoundaryKind, 6> faces{};
+  std::array<double, 6> friction{};  // Coulomb mu of the BoundaryKind::Friction faces
 };
 
 // A box of material filled with per_cell^D points per cell.

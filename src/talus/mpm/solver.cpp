@@ -203,13 +203,16 @@ void Solver<D>::step_with(double dt) {
     }
     grid.velocity[a] = trial;
   }
-  grid.constrain(grid.velocity_old);
   if (!rigid_bodies.empty()) {
     rigid_to_grid<Shape>(dt);
     rigid_contact(mass_floor);
   }
   clamp_membrane_nodes<D, Shape>(membranes, grid, grid.velocity, params.gimp_half_width);
-  grid.constrain(grid.velocity);
+  // The updated velocities first: they decide which nodes of a friction face
+  // touch it, and those take the roller's constraint in velocity_old too.
+  grid.constrain_velocity(grid.velocity, &grid.velocity_old,
+                          params.transfer == Transfer::Apic ? 0.0 : params.flip);
+  grid.constrain(grid.velocity_old);
 
   // 3. grid -> particles: velocities (and for USL positions and gradients)
   const double flip = params.flip, l = params.gimp_half_width;

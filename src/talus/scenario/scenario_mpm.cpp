@@ -84,8 +84,28 @@ void read_grid(TomlReader& r, mpm::MpmScenario& s, const DemContext& ctx) {
   s.grid.cell_size = required_number_in(r, "cell_size", positive());
   s.grid.faces.fill(BoundaryKind::Roller);
   if (auto b = r.optional_table("boundaries")) {
-    for (int f = 0; f < 2 * ctx.dimension; ++f)
-      s.grid.faces[f] = b->enumeration(kFaceKeys[f], kFaces, BoundaryKind::Roller);
+    for (int f = 0; f < 2 * ctx.dimension; ++f) {
+      const char* key = kFaceKeys[f];
+      if (b->has(key) && !b->is_string(key)) {
+        // A Coulomb wall: { friction = mu }.
+        b->expect(b->table().get(key)->is_table(), key,
+                  "\"roller\", \"fixed\", \"free\" or { friction = mu }");
+        auto t = b->optional_table(key);
+        s.grid.faces[f] = BoundaryKind::Friction;
+        s.grid.friction[f] = required_number_in(*t, "friction", non_negative());
+        t->finish();
+        // The B-spline's ghost nodes fold part of the wall's reaction onto the
+        // nodes inside, so the face nodes' normal impulse is not the weight
+        // (a block decelerates at 0.83 or 1.64 mu g; docs/validation/mpm.md).
+        b->expect(s.solver.shape != mpm::ShapeKind::CubicBSpline, key,
+                  "\"roller\", \"fixed\" or \"free\" with shape = \"cubic_bspline\" (a "
+                  "friction face needs \"gimp\" or \"linear\")");
+        continue;
+      }
+      if (b->is_string(key) && b->optional_string(key) == "friction")
+        b->fail(key, "a Coulomb wall is written { friction = mu } (mu >= 0)");
+      s.grid.faces[f] = b->enumeration(key, kFaces, BoundaryKind::Roller);
+    }
     b->finish();
   }
   r.finish();
@@ -348,7 +368,10 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
     run["plan_view"] = {{"basal_friction", p.basal_friction},
                         {"normal_gravity", p.bed_normal_gravity}};
   J faces = J::object();
-  for (int f = 0; f < 2 * dim; ++f) faces[kFaceKeys[f]] = detail::name_of(kFaces, s.grid.faces[f]);
+  for (int f = 0; f < 2 * dim; ++f)
+    faces[kFaceKeys[f]] = s.grid.faces[f] == BoundaryKind::Friction
+                              ? J{{"friction", s.grid.friction[f]}}
+                              : J(detail::name_of(kFaces, s.grid.faces[f]));
   J grid = {{"min", point(s.grid.lo)},
             {"max", point(s.grid.hi)},
             {"cell_size", s.grid.cell_size},
