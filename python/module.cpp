@@ -59,6 +59,9 @@ py::array view(const StateArray& a, py::handle owner) {
 // is driven).
 std::int64_t advance(RunSession& s, double until, std::int64_t steps) {
   using Clock = std::chrono::steady_clock;
+  // Held across the pieces: between them this thread waits for the GIL, and
+  // another Python thread must not step or change the run meanwhile.
+  const RunSession::Claim claim(s);
   std::int64_t taken = 0, piece = 1;
   for (;;) {
     const std::int64_t ask = steps < 0 ? piece : std::min(piece, steps - taken);
@@ -164,6 +167,7 @@ PYBIND11_MODULE(_talus, m) {
       .def("set_wall_servo", &RunSession::set_wall_servo, py::arg("name"), py::arg("pressure"),
            py::arg("speed"), py::arg("area"))
       .def_property_readonly("finished", &RunSession::finished)
+      .def_property_readonly("stepping", &RunSession::stepping)
       .def_property_readonly("out", [](const RunSession& s) { return s.out().string(); })
       .def("arrays",
            [](py::object self) {

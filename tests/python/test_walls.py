@@ -170,3 +170,25 @@ def test_resolved_gives_the_grid_transform_before_the_first_step(tmp_path):
         assert run.arrays()["h"].shape == (grid["cells_y"], grid["cells_x"])
         run.run()
     assert talus.read_run(tmp_path / "g").summary["resolved"] == grid
+
+
+def test_a_second_thread_cannot_change_or_step_a_run_while_it_steps(tmp_path):
+    import threading
+    run = talus.Run(COLLAPSE, out=tmp_path / "t", overrides={"run.duration": 0.3})
+    worker = threading.Thread(target=run.run)
+    worker.start()
+    while not run._session.stepping and worker.is_alive():
+        pass  # the GIL is free while the run steps
+    try:
+        # Refused, not raced: the other thread holds the run.
+        with pytest.raises(talus.InputError, match="stepping"):
+            run.walls()["back"].set_velocity([-0.05, 0.0])
+        with pytest.raises(talus.InputError, match="stepping"):
+            run.step(1)
+        with pytest.raises(talus.InputError, match="stepping"):
+            run.checkpoint()
+    finally:
+        worker.join()
+    assert run.done
+    run.finish()
+    assert talus.read_run(tmp_path / "t").summary["status"] == "completed"

@@ -174,6 +174,7 @@ void RunSession::fail(const std::exception& e) {
 
 RunStats RunSession::advance(double until, std::int64_t steps) {
   if (finished_) throw InputError(out_.string() + ": this run is finished; it cannot be advanced");
+  const Claim claim(*this);
   try {
     begin();
     return loop_->advance(std::min(until, sim_->end_time()), steps);
@@ -181,6 +182,23 @@ RunStats RunSession::advance(double until, std::int64_t steps) {
     fail(e);
     throw;
   }
+}
+
+RunSession::Claim::Claim(RunSession& s) : s_(s) {
+  const auto me = std::this_thread::get_id();
+  if (s_.owner_.load() == me) {
+    ++s_.depth_;
+    return;
+  }
+  std::thread::id none;
+  if (!s_.owner_.compare_exchange_strong(none, me))
+    throw InputError(s_.out_.string() +
+                     ": the run is stepping in another thread; wait for that call to return");
+  s_.depth_ = 1;
+}
+
+RunSession::Claim::~Claim() {
+  if (--s_.depth_ == 0) s_.owner_.store(std::thread::id());
 }
 
 void RunSession::begin() {
@@ -194,6 +212,7 @@ RunStats RunSession::run_to_end() { return advance(sim_->end_time(), -1); }
 
 void RunSession::checkpoint() {
   if (finished_) throw InputError(out_.string() + ": this run is finished");
+  const Claim claim(*this);
   try {
     begin();
     if (loop_->done())
@@ -242,6 +261,7 @@ std::vector<WallReading> RunSession::walls() const {
 
 void RunSession::set_wall_velocity(const std::string& name, const Vec3& v) {
   if (finished_) throw InputError(out_.string() + ": this run is finished");
+  const Claim claim(*this);
   walls_of_method().set_velocity(wall_index(name), v);
   log_->note(
       fmt::format("t = {:.6g} s: wall '{}' translates at ({:.6g}, {:.6g}, {:.6g}) m/s "
@@ -252,6 +272,7 @@ void RunSession::set_wall_velocity(const std::string& name, const Vec3& v) {
 void RunSession::set_wall_servo(const std::string& name, double pressure, double speed,
                                 double area) {
   if (finished_) throw InputError(out_.string() + ": this run is finished");
+  const Claim claim(*this);
   const std::size_t k = wall_index(name);
   const auto before = walls_of_method().walls()[k];
   walls_of_method().set_servo(k, pressure, speed, area);
@@ -267,6 +288,7 @@ void RunSession::set_wall_servo(const std::string& name, double pressure, double
 
 RunResult RunSession::finish() {
   if (finished_) throw InputError(out_.string() + ": this run is already finished");
+  const Claim claim(*this);
   bool done = false;
   try {
     // A run finished before its first step starts all the same: the methods

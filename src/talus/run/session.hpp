@@ -5,6 +5,7 @@
 // steps the one run loop by steps or to a time (outputs fall on the same
 // times however it is driven); finish() writes summary.json. execute()
 // (run.hpp) is a session run to its end; the Python API steps one.
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "talus/run/experiment.hpp"
@@ -53,6 +55,21 @@ class RunSession {
   // The run reached its end time or the method stopped (at rest).
   bool done() const { return loop_->done(); }
   bool finished() const { return finished_; }
+  // A call is stepping the run (or changing it) now.
+  bool stepping() const { return owner_.load() != std::thread::id(); }
+  // Held by every call that steps or changes the run, and by a caller that
+  // steps it in pieces (the Python module) across them: the same thread may
+  // claim again, another gets InputError ("stepping in another thread").
+  class Claim {
+   public:
+    explicit Claim(RunSession& s);
+    ~Claim();
+    Claim(const Claim&) = delete;
+    Claim& operator=(const Claim&) = delete;
+
+   private:
+    RunSession& s_;
+  };
   // Writes summary.json: "completed" when done(), otherwise "stopped" (the
   // caller ended it early); returns the headline and warnings.
   RunResult finish();
@@ -82,6 +99,11 @@ class RunSession {
   std::chrono::steady_clock::time_point loop_t0_;
   std::int64_t first_step_ = 0;
   bool started_ = false, finished_ = false;
+  // The thread whose call steps or changes the run now (none: id()); a
+  // second thread (another Python thread, the GIL being free while stepping)
+  // is refused, not raced. depth_: that thread's nested claims.
+  std::atomic<std::thread::id> owner_{};
+  int depth_ = 0;
 };
 
 }  // namespace talus::run
