@@ -228,6 +228,7 @@ void RunSession::checkpoint() {
 }
 
 nlohmann::json RunSession::resolved() {
+  const Claim claim(*this);
   if (!finished_) {
     try {
       begin();
