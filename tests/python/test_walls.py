@@ -98,26 +98,36 @@ def final_state(run):
     return a["x"][order].copy(), a["v"][order].copy()
 
 
-def test_checkpoint_now_and_resume_keep_the_changed_walls_bit_for_bit(tmp_path):
-    with talus.Run(COLLAPSE, out=tmp_path / "whole", overrides=SHORT) as run:
+# Two threads: found 2026-11-30, not mended — the resumed run ends in other bits (the
+# headline's largest wall force 268.1 against 267 N). The likely cause: the cut of the
+# particles into per-thread chunks (dem/chunk_partition.hpp) is made anew from the resumed
+# state instead of restored from the last neighbour build. strict: this fails once mended.
+@pytest.mark.parametrize("threads", [1, pytest.param(2, marks=pytest.mark.xfail(
+    strict=True, reason="DEM resume on two threads from a checkpoint between builds"))])
+def test_checkpoint_now_and_resume_keep_the_changed_walls_bit_for_bit(tmp_path, threads):
+    with talus.Run(COLLAPSE, out=tmp_path / "whole", overrides=SHORT, threads=threads) as run:
         drive(run, run.end_time)
         whole = final_state(run)
-    with talus.Run(COLLAPSE, out=tmp_path / "parts", overrides=SHORT) as run:
+    whole_headline = run.result["headline"]
+    with talus.Run(COLLAPSE, out=tmp_path / "parts", overrides=SHORT, threads=threads) as run:
         drive(run, 0.0123)  # between series rows: the checkpoint adds one
         t_checkpoint = run.time
         run.checkpoint()
         drive(run, 0.02)  # then stopped: the resume goes back to 0.0123
-    with talus.Run(resume=tmp_path / "parts") as run:
+    with talus.Run(resume=tmp_path / "parts", threads=threads) as run:
         assert run.time == t_checkpoint
         # The velocity set at 5 ms came back from the checkpoint, not the scenario.
         assert run.walls()["back"].velocity[0] == -0.2
         drive(run, run.end_time)
         parts = final_state(run)
+    # What the command line prints at the end (largest wall force and where).
+    assert run.result["headline"] == whole_headline
     assert np.array_equal(whole[0], parts[0]) and np.array_equal(whole[1], parts[1])
     with open(tmp_path / "whole" / "summary.json") as f:
         a = json.load(f)
     with open(tmp_path / "parts" / "summary.json") as f:
         b = json.load(f)
+    # The metrics hold the walls' forces, peaks, impulses and work.
     assert a["metrics"] == b["metrics"]
     # The series: the same rows, and the checkpoint's own row.
     whole_rows = talus.read_run(tmp_path / "whole").series
