@@ -8,7 +8,7 @@ struct RunOptions {
   std::string file, out, resume;
   std::string backend;  // "cpu" | "gpu": sets run.backend (DEM)
   std::vector<std::string> sets;
-  int threads = 1;
+  int threads = 0;  // 0: one, or for --resume the run's own
   bool force = false, quiet = false;
   bool allow_long_run = false;
   double log_seconds = 10.0;

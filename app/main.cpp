@@ -27,7 +27,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out,-o", run.out, "output folder (default: runs/<scenario name>)");
   run_cmd->add_option("--set", run.sets, "override a scenario value: key=value (repeatable)")
       ->allow_extra_args(false);
-  run_cmd->add_option("--threads,-j", run.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  run_cmd
+      ->add_option("--threads,-j", run.threads,
+                   "OpenMP threads (default 1; with --resume the run's own)")
+      ->check(CLI::PositiveNumber);
   run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this folder");
   run_cmd
       ->add_option("--backend", run.backend,

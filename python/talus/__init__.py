@@ -147,18 +147,29 @@ class Wall:
         return f"Wall({self.name!r}, force={self.force.tolist()}, displacement={self.displacement.tolist()})"
 
 
+def _threads(threads):
+    """0 (the run's own, or one) for None; otherwise a positive count."""
+    if threads is None:
+        return 0
+    if int(threads) != threads or threads < 1:
+        raise InputError(f"Run: threads must be a whole number of at least 1, got {threads!r}")
+    return int(threads)
+
+
 class Run:
     """One run of a scenario file, driven from Python.
 
     The constructor checks the scenario (InputError), claims the output folder
     (`out`, default runs/<name> as on the command line; `force=True` empties a
     folder talus wrote before) and builds the method; nothing has stepped yet.
-    `resume=DIR` continues the run in DIR from its checkpoint instead.
+    `resume=DIR` continues the run in DIR from its checkpoint instead, on the
+    thread count it last ran on unless `threads` is given (another count ends
+    in other bits than the uninterrupted run; a warning then says so).
     The run writes what `talus run` writes (summary.json, series.csv,
     snapshots, log.txt) on the same simulated times however it is stepped.
     """
 
-    def __init__(self, scenario=None, *, out=None, overrides=None, threads=1, force=False,
+    def __init__(self, scenario=None, *, out=None, overrides=None, threads=None, force=False,
                  resume=None, allow_long_run=False):
         path, text, sets = "", "", _sets(overrides)
         if isinstance(scenario, dict):
@@ -171,7 +182,7 @@ class Run:
             path, text,
             os.fspath(out) if out is not None else "",
             os.fspath(resume) if resume is not None else "",
-            sets, int(threads), bool(force), bool(allow_long_run))
+            sets, _threads(threads), bool(force), bool(allow_long_run))
         self.result = None  # finish()'s dict once finished
 
     # The clock and where the run writes.

@@ -28,17 +28,18 @@ wait_for_checkpoint() {  # output folder, pid of the run
 }
 # Runs a scenario to its end into $tmp/NAME-full, and again into $tmp/NAME,
 # killed with SIGKILL after its first checkpoint and resumed (a check each).
-killed_and_resumed() {  # name, scenario
-  local name=$1 scenario=$2
-  "$talus" run "$scenario" --quiet -j 1 --out "$tmp/$name-full" >"$tmp/out" 2>&1; rc=$?
+killed_and_resumed() {  # name, scenario[, threads (default 1)]
+  local name=$1 scenario=$2 threads=${3:-1}
+  "$talus" run "$scenario" --quiet -j "$threads" --out "$tmp/$name-full" >"$tmp/out" 2>&1; rc=$?
   check_rc "$name: uninterrupted run" "$tmp/out"
-  "$talus" run "$scenario" --quiet -j 1 --out "$tmp/$name" & pid=$!
+  "$talus" run "$scenario" --quiet -j "$threads" --out "$tmp/$name" & pid=$!
   wait_for_checkpoint "$tmp/$name" $pid
   check "$name: still going when killed (else make it longer)" 'kill -0 $pid 2>/dev/null'
   kill -9 $pid; wait $pid 2>/dev/null
   check "$name: a checkpoint was written" '[ -f "$tmp/$name/checkpoint.bin" ]'
   check "$name: the killed run had not finished" '[ ! -f "$tmp/$name/summary.json" ]'
-  "$talus" run --resume "$tmp/$name" --quiet -j 1 >"$tmp/out" 2>&1; rc=$?
+  # Without -j: a resume runs on the thread count the run ran on.
+  "$talus" run --resume "$tmp/$name" --quiet >"$tmp/out" 2>&1; rc=$?
   check_rc "$name: resume exits 0" "$tmp/out"
 }
 

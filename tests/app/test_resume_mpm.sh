@@ -25,6 +25,17 @@ assert a["metrics"]["cracked_points"] > 0, a["metrics"]
 PY
 check_rc "summary metrics identical, cohesion lost in the run"
 
+# On two threads (the resume takes the run's two from its folder).
+killed_and_resumed mpm_2 "$scenario" 2
+check "two threads: series.csv identical" 'cmp -s "$tmp/mpm_2-full/series.csv" "$tmp/mpm_2/series.csv"'
+/usr/bin/python3 - "$tmp/mpm_2-full" "$tmp/mpm_2" >"$tmp/py" 2>&1 <<'PY'; rc=$?
+import json, sys
+a, b = (json.load(open(d + "/summary.json")) for d in sys.argv[1:3])
+assert a["metrics"] == b["metrics"], (a["metrics"], b["metrics"])
+PY
+check_rc "two threads: summary metrics identical"
+check "two threads: the resume ran on two" 'grep -q "resumed.*2 threads" "$tmp/mpm_2/log.txt"'
+
 mkdir -p "$tmp/empty" && cp "$full/scenario.toml" "$tmp/empty/"
 "$talus" run --resume "$tmp/empty" >"$tmp/out" 2>&1; rc=$?
 check "resume without checkpoint exits 2" '[ $rc -eq 2 ] && grep -q "checkpoint" "$tmp/out"'

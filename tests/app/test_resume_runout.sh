@@ -52,6 +52,11 @@ same fv2d "snapshots/${last/height/speed}"
 same fv2d "snapshots/$(ls "$tmp/fv2d-full"/snapshots/flow_*.vtu | tail -1 | xargs basename)"
 same_metrics fv2d
 
+# On two threads (the resume takes the run's two from its folder).
+killed_and_resumed fv2d_2 "$src/tests/data/scenarios/fv2d_resume.toml" 2
+for f in series.csv max_height.npy deposit.npy; do same fv2d_2 $f; done
+same_metrics fv2d_2
+
 killed_and_resumed two_phase "$src/tests/data/scenarios/two_phase_resume.toml"
 for f in series.csv max_height max_solid_height max_fluid_height max_solid_speed max_fluid_speed \
   max_pressure max_solid_pressure max_fluid_pressure arrival_time deposit deposit_solid \

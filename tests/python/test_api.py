@@ -124,6 +124,24 @@ def test_resume_from_python_continues_bit_for_bit(tmp_path):
     assert physics(reference)["metrics"] == physics(tmp_path / "parts")["metrics"]
 
 
+def test_resume_takes_the_runs_thread_count_and_warns_on_another(tmp_path):
+    sets = dict(SHORT, **{"output.checkpoint_interval": 0.01})
+    for name in ("same", "other"):
+        with talus.Run(COLLAPSE, out=tmp_path / name, overrides=sets, threads=2) as run:
+            run.run(until=0.015)
+    with talus.Run(resume=tmp_path / "same") as run:
+        assert run.resolved()["threads"] == 2
+        run.run()
+    assert "warnings" not in run.result or not run.result["warnings"]
+    with talus.Run(resume=tmp_path / "other", threads=1) as run:
+        run.run()
+    assert any("resumed on 1 thread where the run ran on 2" in w for w in run.result["warnings"])
+    assert "resumed on 1 thread" in " ".join(
+        talus.read_run(tmp_path / "other").summary["warnings"])
+    with pytest.raises(talus.InputError, match="threads"):
+        talus.Run(COLLAPSE, out=tmp_path / "bad", threads=0)
+
+
 @pytest.mark.parametrize("scenario, sets", [
     (os.path.join("mpm", "mpm_column_collapse.toml"),
      {"run.duration": 0.02, "output.series_interval": 0.002,

@@ -98,12 +98,9 @@ def final_state(run):
     return a["x"][order].copy(), a["v"][order].copy()
 
 
-# Two threads: found 2026-11-30, not mended — the resumed run ends in other bits (the
-# headline's largest wall force 268.1 against 267 N). The likely cause: the cut of the
-# particles into per-thread chunks (dem/chunk_partition.hpp) is made anew from the resumed
-# state instead of restored from the last neighbour build. strict: this fails once mended.
-@pytest.mark.parametrize("threads", [1, pytest.param(2, marks=pytest.mark.xfail(
-    strict=True, reason="DEM resume on two threads from a checkpoint between builds"))])
+# On two threads the checkpoint falls between neighbour builds: the resume must
+# reuse the threads' chunk cut of the last build (it is in the checkpoint).
+@pytest.mark.parametrize("threads", [1, 2])
 def test_checkpoint_now_and_resume_keep_the_changed_walls_bit_for_bit(tmp_path, threads):
     with talus.Run(COLLAPSE, out=tmp_path / "whole", overrides=SHORT, threads=threads) as run:
         drive(run, run.end_time)

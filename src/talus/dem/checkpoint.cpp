@@ -15,7 +15,9 @@ constexpr const char* kMagic = "talus-dem-checkpoint";
 // 6: the work each wall has done, the kinetic energy removed particles took along.
 // 7: the walls' translation and servo settings, which a caller may change
 // during the run (the Python API), and the translation they replaced.
-constexpr int32_t kVersion = 7;
+// 8: the threads' chunk cut (dem/chunk_cut.hpp), so that a resume on several
+// threads sums forces in the same order.
+constexpr int32_t kVersion = 8;
 
 struct PairIndex {
   int32_t i, j;
@@ -35,6 +37,7 @@ void transfer(Ar& ar, System& s) {
   auto& nl = s.neighbours;
   ar(nl.wall_start), ar(nl.wall_prim), ar(nl.builds);
   ar(nl.reference_positions());
+  ar(s.chunk_cut.build), ar(s.chunk_cut.particles), ar(s.chunk_cut.starts);
 }
 
 // The friction springs of one membrane's contacts.
@@ -54,6 +57,16 @@ void transfer_membrane(Ar& ar, membrane::MembraneBody& mb) {
   ar(m.x), ar(m.v), ar(m.f), ar(m.fixed), ar(m.follows), ar(m.anchor);
   ar(m.rest.length), ar(m.rest.sin_half_angle), ar(m.params.pressure);
   ar(mb.reaction), ar(mb.contacts), ar(mb.self_contacts);
+}
+
+// Chunks start in order within the particles, the first at 0.
+bool valid_cut(const ChunkCut& cut) {
+  int64_t previous = 0;
+  for (const int32_t start : cut.starts) {
+    if (start < previous || start > cut.particles) return false;
+    previous = start;
+  }
+  return cut.starts.empty() || cut.starts.front() == 0;
 }
 
 template <int D>
@@ -136,6 +149,7 @@ void load_checkpoint(DemSystem<D>& s, const std::filesystem::path& path) {
     throw InputError(where + "checkpoint has another number of membranes than the scenario");
   Loader<D> load{r};
   transfer<D>(load, s);
+  if (!valid_cut(s.chunk_cut)) throw InputError(where + "inconsistent thread chunk cut");
   auto& nl = s.neighbours;
   std::vector<PairIndex> pairs;
   std::vector<typename Space<D>::Vec> shear, wshear;

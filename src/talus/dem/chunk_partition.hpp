@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "talus/core/team_sync.hpp"
+#include "talus/dem/chunk_cut.hpp"
 #include "talus/dem/neighbour_list.hpp"
 #include "talus/dem/particles.hpp"
 
@@ -120,10 +121,27 @@ class ChunkPartition {
   // Cuts anew into `nc` chunks after a neighbour-list build (or a change of
   // the chunk count or of the particle count); otherwise keeps the cut.
   void prepare(int nc, const Particles<D>& p, const NeighbourList<D>& nl) {
+    prepare(nc, p, nl, scratch_cut_);
+  }
+
+  // The same, where `kept` holds the cut of the run's state (DemSystem): a
+  // cut made for this build, particle count and chunk count is taken from it
+  // rather than made anew from the contacts of the moment (a resumed run then
+  // sums its forces as the uninterrupted one did); a new cut is stored there.
+  void prepare(int nc, const Particles<D>& p, const NeighbourList<D>& nl, ChunkCut& kept) {
     const int n = static_cast<int>(p.size());
     if (size() == nc && built_ == nl.builds && n_ == n) return;
     chunks_.resize(nc);
-    cut(nc, p, nl);
+    if (kept.build == nl.builds && kept.particles == n &&
+        kept.starts.size() == static_cast<std::size_t>(nc)) {
+      cut_at(kept.starts, p, nl);
+    } else {
+      cut(nc, p, nl);
+      kept.build = nl.builds;
+      kept.particles = n;
+      kept.starts.resize(nc);
+      for (int c = 0; c < nc; ++c) kept.starts[c] = chunks_[c].p0;
+    }
     const auto& pairs = nl.pairs;
     for (auto& s : chunks_) {
       s.lo = n;
@@ -276,14 +294,28 @@ class ChunkPartition {
       while (k < np && pairs[k].i == i) ++k;
       cost_[i + 1] = cost_[i] + cost(p.contacts[i], k - first);
     }
-    k = 0;
+    starts_.resize(nc);
+    for (int c = 0; c < nc; ++c) {
+      const double target = cost_[n] * c / nc;
+      int p0 = c == 0 ? 0
+                      : static_cast<int>(std::lower_bound(cost_.begin(), cost_.end(), target) -
+                                         cost_.begin());
+      starts_[c] = std::clamp(p0, c == 0 ? 0 : starts_[c - 1], n);
+    }
+    cut_at(starts_, p, nl);
+  }
+
+  // Chunk c's particles start at starts[c] (ascending, starts[0] = 0); its
+  // pairs are those whose first particle it holds.
+  template <class Starts>
+  void cut_at(const Starts& starts, const Particles<D>& p, const NeighbourList<D>& nl) {
+    const int n = static_cast<int>(p.size()), nc = size();
+    const auto& pairs = nl.pairs;
+    const std::size_t np = pairs.size();
+    std::size_t k = 0;
     for (int c = 0; c < nc; ++c) {
       auto& s = chunks_[c];
-      const double target = cost_[n] * c / nc;
-      s.p0 = c == 0 ? 0
-                    : static_cast<int>(std::lower_bound(cost_.begin(), cost_.end(), target) -
-                                       cost_.begin());
-      s.p0 = std::clamp(s.p0, c == 0 ? 0 : chunks_[c - 1].p0, n);
+      s.p0 = static_cast<int>(starts[c]);
       while (k < np && pairs[k].i < s.p0) ++k;
       s.k0 = k;
       if (c > 0) {
@@ -298,6 +330,8 @@ class ChunkPartition {
   std::vector<Chunk> chunks_;
   std::vector<Flag> scattered_, finished_;
   std::vector<double> cost_;  // cumulative cost of the particles
+  std::vector<int> starts_;   // the cut being made
+  ChunkCut scratch_cut_;      // for callers that keep no cut of their own
   int built_ = -1;            // neighbour-list build of the cut
   int n_ = -1;                // particle count of the cut
 };

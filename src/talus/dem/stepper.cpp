@@ -244,7 +244,6 @@ class Stepper final : public StepperBase<D> {
     bool membranes = false;
     if constexpr (D == 3) membranes = membranes_ != nullptr;
     team_tasks_ = rebuild_now_ || membranes;
-    partition_.drift_claims.reset(team_, partition_.size());
     if (!team_tasks_) open_step();
   }
 
@@ -277,8 +276,12 @@ class Stepper final : public StepperBase<D> {
     ++force_pass_;
     // The chunks follow the thread count asked for, not the team of the
     // moment: a step gives the same bits with one thread or the whole team.
-    if (chunked()) partition_.prepare(s_.threads * kChunksPerThread, s_.particles, s_.neighbours);
+    if (chunked())
+      partition_.prepare(s_.threads * kChunksPerThread, s_.particles, s_.neighbours, s_.chunk_cut);
     partition_.force_claims.reset(team, partition_.size());
+    // The next step's drift goes by the chunks just prepared (after a resume
+    // the first step's serial part is the first to prepare any).
+    partition_.drift_claims.reset(team, partition_.size());
     prepare_wall_accumulators(chunked() ? partition_.size() : 1);
     pair_touching_ = 0;
     wall_touching_ = 0;

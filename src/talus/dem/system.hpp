@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "talus/dem/chunk_cut.hpp"
 #include "talus/dem/membrane/body.hpp"
 #include "talus/dem/membrane/driven_sphere.hpp"
 #include "talus/dem/neighbour_list.hpp"
@@ -53,6 +54,7 @@ struct DemSystem {
   // the list is rebuilt once a wall has moved half the skin since then.
   std::vector<Vec3> wall_displacement_at_build;
   std::vector<double> wall_angle_at_build;
+  ChunkCut chunk_cut;  // how the threads share the step (dem/chunk_cut.hpp)
 
   // Filled by every step.
   int64_t pair_contacts = 0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -30,14 +31,17 @@ constexpr const char* kFinished = "talus run folder: finished";
 bool is_own(const std::string& name) { return name == kRecord || name == kLock; }
 
 constexpr const char* kScenario = "scenario ";
+constexpr const char* kThreads = "threads ";
 
 // What `.talus-run` says: whether the run finished, the checksum of the
-// scenario.toml it started from, and the entries it wrote. Line 1 the state,
-// line 2 "scenario <checksum>" ("scenario -" before one is written), then one
-// entry per line.
+// scenario.toml it started from, the thread count it last ran on, and the
+// entries it wrote. Line 1 the state, line 2 "scenario <checksum>" ("scenario
+// -" before one is written), line 3 "threads <n>" (absent in folders of older
+// talus), then one entry per line.
 struct Record {
   bool present = false, finished = false;
   std::string scenario = "-";
+  int threads = 0;  // 0: not recorded
   std::set<std::string> entries;
 };
 
@@ -53,6 +57,15 @@ Record read_record(const fs::path& out) {
     r.scenario = line.substr(std::string(kScenario).size());
   else if (!line.empty())
     r.entries.insert(line);
+  if (std::getline(in, line) && line.starts_with(kThreads)) {
+    int n = 0;
+    const char *first = line.data() + std::string(kThreads).size(),
+               *last = line.data() + line.size();
+    const auto [end, ec] = std::from_chars(first, last, n);
+    r.threads = ec == std::errc() && end == last && n > 0 ? n : 0;
+  } else if (!line.empty()) {
+    r.entries.insert(line);
+  }
   while (std::getline(in, line))
     if (!line.empty()) r.entries.insert(line);
   return r;
@@ -60,7 +73,7 @@ Record read_record(const fs::path& out) {
 
 // Writes the record through a temporary file and a rename, so that a reader
 // sees the old record or the new one, never half of one.
-void write_record(const fs::path& out, bool finished, const std::string& scenario) {
+void write_record(const fs::path& out, bool finished, const std::string& scenario, int threads) {
   std::vector<std::string> entries;
   std::error_code ec;
   if (finished)
@@ -69,8 +82,8 @@ void write_record(const fs::path& out, bool finished, const std::string& scenari
       if (!is_own(name) && name != std::string(kRecord) + ".tmp") entries.push_back(name);
     }
   std::sort(entries.begin(), entries.end());
-  std::string text =
-      fmt::format("{}\n{}{}\n", finished ? kFinished : kRunning, kScenario, scenario);
+  std::string text = fmt::format("{}\n{}{}\n{}{}\n", finished ? kFinished : kRunning, kScenario,
+                                 scenario, kThreads, threads);
   for (const auto& e : entries) text += e + '\n';
   // Whole or not at all (a full disk once left it empty): temporary file, then rename.
   try {
@@ -136,7 +149,7 @@ bool holds_others(const fs::path& out) {
 
 }  // namespace
 
-OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
+OutputFolder OutputFolder::claim(const fs::path& out, bool force, int threads) {
   if (fs::exists(out) && !fs::is_directory(out))
     throw InputError(out.string() + ": output path exists and is not a folder");
   // Everything is checked before the folder is touched.
@@ -155,19 +168,23 @@ OutputFolder OutputFolder::claim(const fs::path& out, bool force) {
                     out.string(), ec.message()));
   OutputFolder folder(out, lock(out));
   folder.created_ = !existed;
+  folder.threads_ = threads;
   // Read again under the lock: the run that wrote it may have finished since.
   if (full) {
     const Record record = read_record(out);
     check_own_folder(out, record);
     for (const auto& name : record.entries) fs::remove_all(out / name);
   }
-  write_record(out, false, folder.scenario_);
+  write_record(out, false, folder.scenario_, folder.threads_);
   folder.recording_ = true;
   return folder;
 }
 
-OutputFolder OutputFolder::reopen(const fs::path& out) {
+int OutputFolder::recorded_threads(const fs::path& out) { return read_record(out).threads; }
+
+OutputFolder OutputFolder::reopen(const fs::path& out, int threads) {
   OutputFolder folder(out, lock(out));
+  folder.threads_ = threads;
   const Record record = read_record(out);
   folder.scenario_ = scenario_checksum(out);
   if (record.scenario != "-" && record.scenario != folder.scenario_)
@@ -175,14 +192,14 @@ OutputFolder OutputFolder::reopen(const fs::path& out) {
         "{}: scenario.toml was changed after the run started; a resumed run continues the "
         "scenario it started with: restore the file, or start a new run from the changed one",
         (out / "scenario.toml").string()));
-  write_record(out, false, folder.scenario_);
+  write_record(out, false, folder.scenario_, folder.threads_);
   folder.recording_ = true;
   return folder;
 }
 
 void OutputFolder::scenario_written() {
   scenario_ = scenario_checksum(path_);
-  write_record(path_, false, scenario_);
+  write_record(path_, false, scenario_, threads_);
 }
 
 OutputFolder::OutputFolder(OutputFolder&& other) noexcept
@@ -190,6 +207,7 @@ OutputFolder::OutputFolder(OutputFolder&& other) noexcept
       lock_(other.lock_),
       recording_(other.recording_),
       scenario_(std::move(other.scenario_)),
+      threads_(other.threads_),
       created_(other.created_) {
   other.lock_ = -1;
 }
@@ -201,6 +219,7 @@ OutputFolder& OutputFolder::operator=(OutputFolder&& other) noexcept {
     lock_ = other.lock_;
     recording_ = other.recording_;
     scenario_ = std::move(other.scenario_);
+    threads_ = other.threads_;
     created_ = other.created_;
     other.lock_ = -1;
   }
@@ -223,7 +242,7 @@ void OutputFolder::discard() noexcept {
 void OutputFolder::release() noexcept {
   if (lock_ < 0) return;
   try {
-    if (recording_) write_record(path_, true, scenario_);
+    if (recording_) write_record(path_, true, scenario_, threads_);
   } catch (...) {
     // The record serves a later --force only; a run that cannot write it has
     // already reported why it could not write.

@@ -19,11 +19,14 @@ class OutputFolder {
  public:
   // Creates or takes `out` for a new run; refuses (InputError) a non-empty
   // folder unless `force`, and with `force` a folder holding files talus did
-  // not write; refuses a folder another run holds.
-  static OutputFolder claim(const std::filesystem::path& out, bool force);
-  // Takes an existing run folder to continue a run in it (resume); refuses
-  // one whose scenario.toml changed since the run wrote it.
-  static OutputFolder reopen(const std::filesystem::path& out);
+  // not write; refuses a folder another run holds. `threads`: what the run
+  // runs on (recorded, so that a resume can take the same; 0: not a run).
+  static OutputFolder claim(const std::filesystem::path& out, bool force, int threads = 0);
+  // Takes an existing run folder to continue a run in it (resume) on
+  // `threads`; refuses one whose scenario.toml changed since the run wrote it.
+  static OutputFolder reopen(const std::filesystem::path& out, int threads);
+  // The thread count the run in `out` last ran on; 0 when not recorded.
+  static int recorded_threads(const std::filesystem::path& out);
   // Records the checksum of the scenario.toml the run just wrote.
   void scenario_written();
   // The run was refused before it started (bad input found while building):
@@ -50,6 +53,7 @@ class OutputFolder {
   // found empty or emptied, never for a claim that was refused.
   bool recording_ = false;
   std::string scenario_ = "-";  // checksum of scenario.toml, "-" before it is written
+  int threads_ = 0;             // the run's thread count, 0 when not a run
   bool created_ = false;        // claim() made the folder
 };
 

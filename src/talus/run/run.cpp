@@ -92,18 +92,28 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
   // The team of every OpenMP loop that names none (sums, maps): the run's, in
   // whatever process drives it (the command line, Python), so that the same
   // scenario and thread count give the same bits.
-  omp_set_num_threads(std::max(1, req.threads));
+  threads_ = std::max(1, req.threads);
+  if (resume_) {
+    const int recorded = OutputFolder::recorded_threads(req.resume);
+    if (req.threads == 0 && recorded > 0) threads_ = recorded;
+    if (req.threads > 0 && recorded > 0 && req.threads != recorded)
+      warnings_.push_back(fmt::format(
+          "resumed on {} thread{} where the run ran on {}: its results now differ in their last "
+          "bits from an uninterrupted run's",
+          req.threads, req.threads == 1 ? "" : "s", recorded));
+  }
+  omp_set_num_threads(threads_);
   const auto file = load(req, out_);
   if (file.method == "compare")
     throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
                      "`");
   const Method& method = method_for(file);
-  ctx_ = RunContext{out_, req.threads, resume_};
+  ctx_ = RunContext{out_, threads_, resume_};
   // Held until the session ends: the lock, then the record of talus's files.
   if (resume_)
-    folder_.emplace(OutputFolder::reopen(out_));
+    folder_.emplace(OutputFolder::reopen(out_, threads_));
   else
-    ctx_.prepare = [this] { folder_.emplace(OutputFolder::claim(out_, request_.force)); };
+    ctx_.prepare = [this] { folder_.emplace(OutputFolder::claim(out_, request_.force, threads_)); };
   try {
     sim_ = method.create(file, ctx_);
     check_step_count(file.path, sim_->estimated_steps(), sim_->end_time() - sim_->time(),
@@ -121,8 +131,8 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
   log_ = std::make_unique<RunLog>(out_, req.log_seconds, req.log_to_stderr);
   const double steps = sim_->estimated_steps();
   log_->started(fmt::format("talus {} {} {} ({}, {} thread{}{})", version(),
-                            resume_ ? "resumed" : "started", file.path, method.name, req.threads,
-                            req.threads == 1 ? "" : "s",
+                            resume_ ? "resumed" : "started", file.path, method.name, threads_,
+                            threads_ == 1 ? "" : "s",
                             steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
   loop_->progress_seconds = std::min(loop_->progress_seconds, req.log_seconds);
   loop_->progress = [this](const Progress& p) {
@@ -154,6 +164,8 @@ void RunSession::fill(const char* status, const std::string& error) {
   summary_.status = status;
   summary_.error = error;
   summary_.report = sim_->report();
+  summary_.report.warnings.insert(summary_.report.warnings.begin(), warnings_.begin(),
+                                  warnings_.end());
   summary_.steps = sim_->steps() - first_step_;
   summary_.simulated_time = sim_->time();
   summary_.loop_seconds = loop_->stats().wall_seconds;

@@ -21,7 +21,9 @@ struct RunRequest {
   std::filesystem::path out;      // empty: runs/<name>
   std::filesystem::path resume;   // a run folder to continue from its checkpoint
   std::vector<std::string> sets;  // "key=value" overrides
-  int threads = 1;
+  // OpenMP threads; 0: one for a new run, and for a resume the count the run
+  // last ran on (its bits depend on it).
+  int threads = 0;
   bool force = false;  // empty an existing output folder
   std::function<void(const Progress&)> progress;
   double log_seconds = 10.0;    // wall seconds between progress lines in log.txt

@@ -98,6 +98,8 @@ class RunSession {
   SummaryInput summary_;
   std::chrono::steady_clock::time_point loop_t0_;
   std::int64_t first_step_ = 0;
+  int threads_ = 1;                    // what the run steps on
+  std::vector<std::string> warnings_;  // the session's own, added to the method's
   bool started_ = false, finished_ = false;
   // The thread whose call steps or changes the run now (none: id()); a
   // second thread (another Python thread, the GIL being free while stepping)
