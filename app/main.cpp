@@ -12,11 +12,27 @@
 #include "calibrate.hpp"
 #include "commands.hpp"
 #include "compare.hpp"
+#include "talus/comm/comm.hpp"
 #include "talus/core/error.hpp"
 #include "talus/core/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace talus::app;
+  // Under mpirun each process is a rank (src/talus/comm/). No command spreads
+  // a run over ranks yet: refuse, rather than run N copies into one folder.
+  talus::comm::Comm::init(&argc, &argv);
+  struct EndMpi {
+    ~EndMpi() { talus::comm::Comm::finalize(); }
+  } end_mpi;
+  if (const auto& world = talus::comm::Comm::world(); world.size() > 1) {
+    if (world.root())
+      fmt::print(stderr,
+                 "talus: error: started on {} MPI ranks, and no talus command runs on several "
+                 "ranks yet (the fv2d grid solver does, in its tests; docs/mpi.md): start talus "
+                 "without mpirun\n",
+                 world.size());
+    return 2;
+  }
   CLI::App cli{"talus: granular flows and mass movements (DEM, depth-averaged runout, MPM)"};
   cli.set_version_flag("--version", talus::version());
   cli.require_subcommand(1);

@@ -5,7 +5,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libgdal-dev voro++-dev
-      libnlopt-dev
+      libnlopt-dev libopenmpi-dev openmpi-bin
       python3 python3-vtk9 python3-matplotlib python3-numpy
       python3-dev pybind11-dev python3-pytest python3-pandas python3-scipy)
 # The peer benchmarks need LIGGGHTS (bench/peer.sh) and Gerris (bench/gerris_dam_break.py).

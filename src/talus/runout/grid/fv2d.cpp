@@ -7,7 +7,6 @@
 #include <limits>
 
 #include "talus/core/error.hpp"
-#include "talus/runout/grid/cell_sums.hpp"
 #include "talus/runout/grid/divergence.hpp"
 #include "talus/runout/grid/limiter.hpp"
 
@@ -61,14 +60,13 @@ inline FaceState ghost(const FaceState& inside, GridBoundary b) {
   return b == GridBoundary::Wall ? FaceState{inside.h, -inside.u, inside.v, inside.gp} : inside;
 }
 
-bool any_wet(const FlowState& s, double dry) {
-  return std::any_of(s.h.begin(), s.h.end(), [dry](double h) { return h > dry; });
-}
+// The ranks of a solver that is not distributed.
+const comm::Comm kOneRank;
 
 }  // namespace
 
 Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> initial_depth)
-    : terrain_(std::move(terrain)), p_(params) {
+    : terrain_(std::move(terrain)), p_(params), comm_(&kOneRank) {
   const std::size_t n = terrain_.shape().cells();
   if (initial_depth.size() != n)
     throw InputError(fmt::format("fv2d: {} initial depths for {} cells", initial_depth.size(), n));
@@ -111,6 +109,64 @@ Fv2dSolver::Fv2dSolver(Terrain terrain, Fv2dParams params, std::vector<double> i
   for (int m = 0; m < 3; ++m) fx_[m].resize((g.nx + 1) * g.ny), fy_[m].resize(g.nx * (g.ny + 1));
   quiet_.resize(n);
   find_domain_edges();
+  blocks_ = {static_cast<int>(g.ny), 1};
+  j0_ = 0, j1_ = static_cast<int>(g.ny);
+}
+
+void Fv2dSolver::distribute(const comm::Comm& comm) {
+  const comm::RowBlocks blocks{static_cast<int>(terrain_.shape().ny), comm.size()};
+  for (int r = 0; r < comm.size(); ++r)
+    if (blocks.count(r) < kHaloRows)
+      throw InputError(
+          fmt::format("fv2d: {} grid rows cannot be shared among {} ranks (each needs at least {})",
+                      blocks.rows, comm.size(), kHaloRows));
+  comm_ = &comm;
+  blocks_ = blocks;
+  j0_ = blocks.first(comm.rank()), j1_ = blocks.first(comm.rank() + 1);
+}
+
+int Fv2dSolver::hi(int h) const {
+  const int ny = static_cast<int>(terrain_.shape().ny);
+  return j1_ + h < ny ? j1_ + h : ny;
+}
+
+void Fv2dSolver::exchange_halo(FlowState& s) {
+  if (comm_->size() == 1) return;
+  const std::size_t nx = terrain_.shape().nx, rows = kHaloRows * nx;
+  const int r = comm_->rank(), up = r > 0 ? r - 1 : -1, down = r + 1 < comm_->size() ? r + 1 : -1;
+  for (auto* a : {&s.h, &s.hu, &s.hv}) {
+    double* q = a->data();
+    // My first rows to the rank before me, its last rows into my rows after my block...
+    comm_->shift(q + j0_ * nx, up, q + j1_ * nx, down, rows);
+    // ...and my last rows to the rank after me, its first rows before my block.
+    comm_->shift(q + (j1_ - kHaloRows) * nx, down, q + (j0_ - kHaloRows) * nx, up, rows);
+  }
+}
+
+void Fv2dSolver::gather() {
+  if (comm_->size() == 1) return;
+  std::vector<std::size_t> counts, offsets;
+  blocks_.layout(terrain_.shape().nx, counts, offsets);
+  for (auto* a : {&s_.h, &s_.hu, &s_.hv, &k_}) comm_->all_gather(a->data(), counts, offsets);
+}
+
+template <class F>
+double Fv2dSolver::row_ordered_sum(F f) const {
+  const auto& g = terrain_.shape();
+  const Index nx = static_cast<Index>(g.nx);
+  row_sums_.assign(g.ny, 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index j = j0_; j < j1_; ++j) {
+    double sum = 0.0;
+    for (Index c = j * nx; c < (j + 1) * nx; ++c) sum += f(c);
+    row_sums_[j] = sum;
+  }
+  std::vector<std::size_t> counts, offsets;
+  blocks_.layout(1, counts, offsets);
+  comm_->all_gather(row_sums_.data(), counts, offsets);
+  double sum = 0.0;
+  for (double r : row_sums_) sum += r;
+  return sum;
 }
 
 void Fv2dSolver::find_domain_edges() {
@@ -152,68 +208,65 @@ double Fv2dSolver::speed(std::size_t c) const {
   return std::sqrt(u * u + v * v + w * w);
 }
 
-double Fv2dSolver::volume() const { return cell_sum(s_.h) * terrain_.shape().cell_area(); }
+double Fv2dSolver::volume() const {
+  return row_ordered_sum([&](Index c) { return s_.h[c]; }) * terrain_.shape().cell_area();
+}
 
 double Fv2dSolver::momentum_x() const {
-  return p_.density * cell_sum(s_.hu) * terrain_.shape().cell_area();
+  return p_.density * row_ordered_sum([&](Index c) { return s_.hu[c]; }) *
+         terrain_.shape().cell_area();
 }
 
 double Fv2dSolver::momentum_y() const {
-  return p_.density * cell_sum(s_.hv) * terrain_.shape().cell_area();
+  return p_.density * row_ordered_sum([&](Index c) { return s_.hv[c]; }) *
+         terrain_.shape().cell_area();
 }
 
 double Fv2dSolver::kinetic_energy() const {
-  double sum = 0.0;
-  for (std::size_t c = 0; c < s_.h.size(); ++c) {
+  const double sum = row_ordered_sum([&](Index c) {
     const double sp = speed(c);
-    sum += s_.h[c] * sp * sp;
-  }
+    return s_.h[c] * sp * sp;
+  });
   return 0.5 * p_.density * sum * terrain_.shape().cell_area();
 }
 
 double Fv2dSolver::momentum_sum() const {
-  const auto& g = terrain_.shape();
-  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
-  // Each row summed by one thread, in order; then the rows, in order.
-  row_sums_.resize(g.ny);
-#pragma omp parallel for schedule(static)
-  for (Index j = 0; j < ny; ++j) {
-    double sum = 0.0;
-    for (Index c = j * nx; c < (j + 1) * nx; ++c) sum += s_.h[c] * speed(c);
-    row_sums_[j] = sum;
-  }
-  double sum = 0.0;
-  for (double r : row_sums_) sum += r;
-  return p_.density * sum * g.cell_area();
+  return p_.density * row_ordered_sum([&](Index c) { return s_.h[c] * speed(c); }) *
+         terrain_.shape().cell_area();
 }
 
 double Fv2dSolver::max_speed() const {
+  const std::size_t nx = terrain_.shape().nx;
   double m = 0.0;
-  for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, speed(c));
-  return m;
+  for (std::size_t c = j0_ * nx; c < j1_ * nx; ++c) m = std::max(m, speed(c));
+  return comm_->max(m);
 }
 
 double Fv2dSolver::max_height() const {
+  const std::size_t nx = terrain_.shape().nx;
   double m = 0.0;
-  for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, normal_height(c));
-  return m;
+  for (std::size_t c = j0_ * nx; c < j1_ * nx; ++c) m = std::max(m, normal_height(c));
+  return comm_->max(m);
 }
 
 bool Fv2dSolver::at_rest() const { return max_speed() < kRestSpeed; }
 
 double Fv2dSolver::stable_time_step() const {
   const auto& g = terrain_.shape();
-  const Index n = static_cast<Index>(g.cells());
+  const Index nx = static_cast<Index>(g.nx);
   double rate = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : rate)
-  for (Index c = 0; c < n; ++c) {
+  bool wet = false;
+#pragma omp parallel for schedule(static) reduction(max : rate) reduction(|| : wet)
+  for (Index c = j0_ * nx; c < j1_ * nx; ++c) {
     const double h = s_.h[c];
     if (h <= p_.dry_depth) continue;
+    wet = true;
     const double a = std::sqrt(k_[c] * g_press_[c] * h);
     const double u = s_.hu[c] / h, v = s_.hv[c] / h;
     rate = std::max(rate, (std::abs(u) + a) / g.dx + (std::abs(v) + a) / g.dy);
   }
-  if (rate == 0.0 && !any_wet(s_, p_.dry_depth)) return std::numeric_limits<double>::infinity();
+  rate = comm_->max(rate);
+  if (rate == 0.0 && !comm_->any(wet)) return std::numeric_limits<double>::infinity();
   // Gravity can set still material moving within a step even where no wave
   // speed limits it (k = 0, or everything at rest): it must not cross more
   // than `courant` of a cell in one step from rest, g dt^2 <= courant min(dx, dy).
@@ -224,12 +277,13 @@ double Fv2dSolver::stable_time_step() const {
 void Fv2dSolver::update_earth_pressure() {
   if (p_.pressure.mode == EarthPressureMode::Constant) return;
   const auto& g = terrain_.shape();
-  const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
+  const Index nx = static_cast<Index>(g.nx);
   auto vel = [&](const std::vector<double>& q, Index c) {
     return s_.h[c] > p_.dry_depth ? q[c] / s_.h[c] : 0.0;
   };
+  // Two rows beside the block: the fluxes read them.
 #pragma omp parallel for schedule(static)
-  for (Index j = 0; j < ny; ++j) {
+  for (Index j = lo(2); j < hi(2); ++j) {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       if (s_.h[c] <= p_.dry_depth) continue;
@@ -246,8 +300,10 @@ void Fv2dSolver::reconstruct(const FlowState& in) {
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx), ny = static_cast<Index>(g.ny);
   const double dry = p_.dry_depth;
+  // Velocities on the three rows beside the block, slopes on two: the
+  // fluxes the block's update and its neighbours' quiet flags read.
 #pragma omp parallel for schedule(static)
-  for (Index c = 0; c < nx * ny; ++c) {
+  for (Index c = lo(3) * nx; c < hi(3) * nx; ++c) {
     const double h = in.h[c];
     u_[c] = h > dry ? in.hu[c] / h : 0.0;
     v_[c] = h > dry ? in.hv[c] / h : 0.0;
@@ -257,7 +313,7 @@ void Fv2dSolver::reconstruct(const FlowState& in) {
     // (the compiler vectorises them); the slopes of cells on the grid's edge
     // stay 0 and those next to an outside cell are set to 0 afterwards.
 #pragma omp parallel for schedule(static)
-  for (Index j = 0; j < ny; ++j) {
+  for (Index j = lo(2); j < hi(2); ++j) {
     const Index row = j * nx;
     for (Index c = row + 1; c < row + nx - 1; ++c) {
       sh_x_[c] = limited_slope(in.h[c] - in.h[c - 1], in.h[c + 1] - in.h[c]);
@@ -273,7 +329,7 @@ void Fv2dSolver::reconstruct(const FlowState& in) {
   }
   if (!terrain_.has_outside()) return;
 #pragma omp parallel for schedule(static)
-  for (Index c = 0; c < nx * ny; ++c) {
+  for (Index c = lo(2) * nx; c < hi(2) * nx; ++c) {
     if (!(interior_[c] & 1)) sh_x_[c] = su_x_[c] = sv_x_[c] = 0.0;
     if (!(interior_[c] & 2)) sh_y_[c] = su_y_[c] = sv_y_[c] = 0.0;
   }
@@ -287,8 +343,9 @@ void Fv2dSolver::face_fluxes(const FlowState& in) {
   const auto& dom = terrain_.inside();
   // Faces normal to x: face f of row j lies between cells f - 1 and f. A side
   // beyond the grid or outside the domain is the ghost of the other side.
+  // Rows one beyond the block: their quiet flags are read.
 #pragma omp parallel for schedule(static)
-  for (Index j = 0; j < ny; ++j) {
+  for (Index j = lo(1); j < hi(1); ++j) {
     for (Index f = 0; f <= nx; ++f) {
       const Index k = j * (nx + 1) + f;
       const bool has_l = f > 0 && dom[j * nx + f - 1], has_r = f < nx && dom[j * nx + f];
@@ -317,7 +374,7 @@ void Fv2dSolver::face_fluxes(const FlowState& in) {
   // Faces normal to y: face f of column i lies between rows f - 1 and f; the
   // normal velocity is v.
 #pragma omp parallel for schedule(static)
-  for (Index f = 0; f <= ny; ++f) {
+  for (Index f = lo(1); f <= hi(1); ++f) {
     for (Index i = 0; i < nx; ++i) {
       const Index k = f * nx + i;
       const bool has_l = f > 0 && dom[(f - 1) * nx + i], has_r = f < ny && dom[f * nx + i];
@@ -353,9 +410,10 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
   const auto& by = terrain_.slope_y();
   reconstruct(in);
   face_fluxes(in);
-  // Pass 1: which cells friction holds at rest through this stage.
+  // Pass 1: which cells friction holds at rest through this stage; the rows
+  // beside the block too, as their flags close the block's faces.
 #pragma omp parallel for schedule(static)
-  for (Index j = 0; j < ny; ++j) {
+  for (Index j = lo(1); j < hi(1); ++j) {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       const double h = in.h[c];
@@ -385,7 +443,7 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
   const auto& hyy = terrain_.curvature_yy();
   bool finite = true;
 #pragma omp parallel for schedule(static) reduction(&& : finite)
-  for (Index j = 0; j < ny; ++j) {
+  for (Index j = j0_; j < j1_; ++j) {
     for (Index i = 0; i < nx; ++i) {
       const Index c = j * nx + i;
       if (!dom[c]) continue;
@@ -435,16 +493,25 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
       if (!std::isfinite(mx) || !std::isfinite(my)) finite = false;
     }
   }
-  if (!finite)
+  // Every rank stops when one finds a value that is not finite.
+  if (!comm_->all(finite))
     throw RunError(fmt::format("fv2d: a depth or momentum is not finite at t = {:.6g} s", in.time));
   out.time = in.time + dt;
   // Volume through open edges of the domain (faces next to a quiet cell
-  // carried nothing), summed in one fixed order: the same bits on any team.
+  // carried nothing): per row in face order, then the rows in order (the
+  // same bits on any team and any number of ranks).
   if (p_.boundary != GridBoundary::Open) return 0.0;
+  row_outflow_.assign(g.ny, 0.0);
+  for (const EdgeFace& f : edge_faces_) {
+    const Index j = f.cell / nx;
+    if (j >= j0_ && j < j1_ && !quiet_[f.cell])
+      row_outflow_[j] += f.outward_length * (f.normal_x ? fx_[0][f.face] : fy_[0][f.face]);
+  }
+  std::vector<std::size_t> counts, offsets;
+  blocks_.layout(1, counts, offsets);
+  comm_->all_gather(row_outflow_.data(), counts, offsets);
   double out_flux = 0.0;
-  for (const EdgeFace& f : edge_faces_)
-    if (!quiet_[f.cell])
-      out_flux += f.outward_length * (f.normal_x ? fx_[0][f.face] : fy_[0][f.face]);
+  for (double r : row_outflow_) out_flux += r;
   return out_flux * dt;
 }
 
@@ -452,14 +519,16 @@ void Fv2dSolver::step(double dt) {
   if (!(dt > 0.0)) throw RunError(fmt::format("fv2d: time step {} must be positive", dt));
   update_earth_pressure();
   const double o1 = euler_stage(s_, stage_, dt);
+  exchange_halo(stage_);
   const double o2 = euler_stage(stage_, stage2_, dt);
-  const Index n = static_cast<Index>(s_.h.size());
+  const Index nx = static_cast<Index>(terrain_.shape().nx);
 #pragma omp parallel for schedule(static)
-  for (Index c = 0; c < n; ++c) {
+  for (Index c = j0_ * nx; c < j1_ * nx; ++c) {
     s_.h[c] = 0.5 * (s_.h[c] + stage2_.h[c]);
     s_.hu[c] = 0.5 * (s_.hu[c] + stage2_.hu[c]);
     s_.hv[c] = 0.5 * (s_.hv[c] + stage2_.hv[c]);
   }
+  exchange_halo(s_);
   s_.time += dt;
   outflow_ += 0.5 * (o1 + o2);
 }

@@ -39,8 +39,18 @@
 // where the flow spreads (div U > 0) and k_p where it converges, kept while
 // div U = 0 (as the 1D model does at zero strain). Hungr's strain law is 1D
 // (block strains) and is not offered here.
+//
+// On several ranks (distribute()) each steps a block of rows and exchanges
+// three rows with each neighbour after every stage: a cell's update reads
+// fluxes one row away, which read slopes two rows away, which read the state
+// three rows away. Every pass runs over the rows its consumers read, so a
+// rank computes the rows beside its block exactly as their owner does, and
+// the results are the same bits on any number of ranks (and threads): sums
+// are taken row by row and the rows then added in order.
 #include <vector>
 
+#include "talus/comm/comm.hpp"
+#include "talus/comm/row_blocks.hpp"
 #include "talus/runout/earth_pressure.hpp"
 #include "talus/runout/grid/domain_edges.hpp"
 #include "talus/runout/grid/terrain.hpp"
@@ -79,7 +89,21 @@ class Fv2dSolver {
   // One SSP-RK2 step. Throws RunError when a value is not finite.
   void step(double dt);
 
+  // On several ranks, complete on this rank's rows and the three beside
+  // them; gather() completes it.
   const FlowState& state() const { return s_; }
+
+  // Spreads the rows over the ranks of `comm`, which must outlive the
+  // solver. Every rank still holds the whole grid: the work is divided, the
+  // memory not yet. Throws InputError when a rank would get fewer than
+  // kHaloRows rows. From then on stable_time_step, step, the sums and maxima
+  // and gather are collective: every rank calls them, in the same order.
+  void distribute(const comm::Comm& comm);
+  // Completes state() and the earth-pressure coefficients on every rank.
+  void gather();
+  int first_row() const { return j0_; }
+  int end_row() const { return j1_; }
+  static constexpr int kHaloRows = 3;
   // Replaces depths, momenta and time (e.g. a moving start). Throws
   // InputError for a size mismatch or a negative or non-finite value.
   void set_state(const FlowState& state);
@@ -117,6 +141,14 @@ class Fv2dSolver {
   void reconstruct(const FlowState& in);
   void face_fluxes(const FlowState& in);
   void find_domain_edges();
+  // The three state rows on each side of this rank's block, from its neighbours.
+  void exchange_halo(FlowState& s);
+  // Rows [j0 - h, j1 + h) clipped to the grid.
+  int lo(int h) const { return j0_ - h > 0 ? j0_ - h : 0; }
+  int hi(int h) const;
+  // sum over cells of f(c), row by row, then the rows in order (all ranks).
+  template <class F>
+  double row_ordered_sum(F f) const;
 
   Terrain terrain_;
   Fv2dParams p_;
@@ -134,7 +166,11 @@ class Fv2dSolver {
   // y-neighbours (where a limited slope can be taken); the domain's edge faces.
   std::vector<unsigned char> interior_;
   std::vector<EdgeFace> edge_faces_;
-  mutable std::vector<double> row_sums_;  // momentum_sum's, kept between steps
+  mutable std::vector<double> row_sums_;  // row_ordered_sum's, kept between steps
+  std::vector<double> row_outflow_;       // a stage's outflow per row
+  const comm::Comm* comm_;                // the ranks; one unless distributed
+  comm::RowBlocks blocks_;
+  int j0_ = 0, j1_ = 0;  // this rank's rows
 };
 
 }  // namespace talus::runout
