@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "talus/comm/comm.hpp"
 #include "talus/core/error.hpp"
 #include "talus/run/run.hpp"
 #include "talus/scenario/scenario.hpp"
@@ -53,6 +54,8 @@ int run_command(const RunOptions& opt) {
   req.log_to_stderr = !opt.quiet && !terminal;
   req.log_seconds = opt.log_seconds;
   const auto result = run::execute(req);
+  // On several MPI ranks, rank 0 speaks for the run.
+  if (!talus::comm::Comm::world().root()) return 0;
   for (const auto& text : result.warnings) fmt::print(stderr, "talus: warning: {}\n", text);
   if (!opt.quiet) {
     fmt::print(stderr, "talus: {} steps in {:.2f} s; results in {}\n", result.stats.steps,

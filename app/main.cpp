@@ -18,21 +18,33 @@
 
 int main(int argc, char** argv) {
   using namespace talus::app;
-  // Under mpirun each process is a rank (src/talus/comm/). No command spreads
-  // a run over ranks yet: refuse, rather than run N copies into one folder.
+  // Under mpirun each process is a rank (src/talus/comm/): `talus run` of a
+  // method that spreads over ranks uses them all; every other command is
+  // refused on several ranks, rather than run N copies into one folder.
   talus::comm::Comm::init(&argc, &argv);
   struct EndMpi {
     ~EndMpi() { talus::comm::Comm::finalize(); }
   } end_mpi;
-  if (const auto& world = talus::comm::Comm::world(); world.size() > 1) {
-    if (world.root())
-      fmt::print(stderr,
-                 "talus: error: started on {} MPI ranks, and no talus command runs on several "
-                 "ranks yet (the fv2d grid solver does, in its tests; docs/mpi.md): start talus "
-                 "without mpirun\n",
-                 world.size());
+  const auto& world = talus::comm::Comm::world();
+  if (!talus::comm::Comm::built_with_mpi() && talus::comm::Comm::launched_processes() > 1) {
+    fmt::print(stderr,
+               "talus: error: started by an MPI launcher on {} processes, but this talus was "
+               "built without MPI (docs/mpi.md): start it without mpirun\n",
+               talus::comm::Comm::launched_processes());
     return 2;
   }
+  // An error on one rank ends them all (the others would wait for it in a
+  // collective); a bad input, found alike on every rank, is printed by rank 0.
+  auto fail = [&](int code, const char* kind, const char* what) {
+    if (world.root() || code != 2)
+      fmt::print(stderr, "talus: {}{}: {}\n", kind,
+                 world.size() > 1 ? fmt::format(" (MPI rank {})", world.rank()) : "", what);
+    if (world.size() > 1) {
+      std::fflush(stderr);
+      world.abort(code);
+    }
+    return code;
+  };
   CLI::App cli{"talus: granular flows and mass movements (DEM, depth-averaged runout, MPM)"};
   cli.set_version_flag("--version", talus::version());
   cli.require_subcommand(1);
@@ -203,6 +215,14 @@ int main(int argc, char** argv) {
     const int rc = cli.exit(e);
     return rc == 0 ? 0 : 2;
   }
+  if (world.size() > 1 && !run_cmd->parsed()) {
+    if (world.root())
+      fmt::print(stderr,
+                 "talus: error: started on {} MPI ranks; only `talus run` of an fv2d scenario "
+                 "runs on several (docs/mpi.md): start this command without mpirun\n",
+                 world.size());
+    return 2;
+  }
   try {
     if (run_cmd->parsed()) return run_command(run);
     if (val_cmd->parsed()) return validate_command(val);
@@ -216,14 +236,11 @@ int main(int argc, char** argv) {
     if (pk_cmd->parsed()) return packing_command(pc);
     if (beam_cmd->parsed()) return beam_analysis_command(bc);
   } catch (const talus::InputError& e) {
-    fmt::print(stderr, "talus: error: {}\n", e.what());
-    return 2;
+    return fail(2, "error", e.what());
   } catch (const talus::RunError& e) {
-    fmt::print(stderr, "talus: run failed: {}\n", e.what());
-    return 1;
+    return fail(1, "run failed", e.what());
   } catch (const std::exception& e) {
-    fmt::print(stderr, "talus: run failed: {}\n", e.what());
-    return 1;
+    return fail(1, "run failed", e.what());
   }
   return 0;
 }

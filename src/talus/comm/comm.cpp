@@ -38,6 +38,12 @@ bool Comm::built_with_mpi() {
 #endif
 }
 
+int Comm::launched_processes() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* n = std::getenv(v)) return std::max(1, std::atoi(n));
+  return 1;
+}
+
 void Comm::init(int* argc, char*** argv) {
 #ifdef TALUS_WITH_MPI
   if (started || !launched_by_mpi()) return;

@@ -24,6 +24,10 @@ class Comm {
   static const Comm& world();
   // Whether this talus was built with MPI.
   static bool built_with_mpi();
+  // The number of processes an MPI launcher started (1 without one), read
+  // from its environment: a talus built without MPI under `mpirun -n 4`
+  // must refuse rather than run four copies.
+  static int launched_processes();
 
   int rank() const { return rank_; }
   int size() const { return size_; }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "talus/comm/comm.hpp"
 #include "talus/run/simulation.hpp"
 #include "talus/scenario/scenario.hpp"
 
@@ -21,6 +22,10 @@ struct RunContext {
   std::filesystem::path out;  // the run folder: created and empty, or the run to resume
   int threads = 1;
   bool resume = false;
+  // The ranks of an MPI job (comm/comm.hpp), given only to a method that
+  // spreads over ranks; rank 0 writes every file, the others only compute.
+  const comm::Comm* ranks = nullptr;
+  bool writes() const { return ranks == nullptr || ranks->root(); }
   // Makes the folder of a fresh run; a method calls it once its input is
   // checked, before writing scenario.toml.
   std::function<void()> prepare = [] {};
@@ -47,6 +52,9 @@ struct Method {
   // Every method writes checkpoints (its outputs' on_checkpoint) and resumes
   // from them: the run layer offers --resume and checkpoint() for all.
   std::function<std::unique_ptr<Simulation>(const io::ScenarioFile&, const RunContext&)> create;
+  // Whether `create` takes ctx.ranks: the run steps on every rank of an MPI
+  // job (docs/mpi.md). The others are refused on more than one rank.
+  bool spreads_over_ranks = false;
 };
 
 // "file:line: [table] 'key'" (without the line when the key is not in the

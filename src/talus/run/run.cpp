@@ -103,12 +103,27 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
           req.threads, req.threads == 1 ? "" : "s", recorded));
   }
   omp_set_num_threads(threads_);
+  if (resume_ && comm::Comm::world().size() > 1)
+    throw InputError(fmt::format(
+        "{}: --resume on several MPI ranks is not supported yet; resume on one rank (the "
+        "results are the same bits on any number of ranks)",
+        req.resume.string()));
   const auto file = load(req, out_);
   if (file.method == "compare")
     throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
                      "`");
   const Method& method = method_for(file);
   ctx_ = RunContext{out_, threads_, resume_};
+  // Under mpirun: a method that spreads over ranks gets them (rank 0 writes,
+  // the others compute); the others are refused (docs/mpi.md).
+  if (const auto& world = comm::Comm::world(); world.size() > 1) {
+    if (!method.spreads_over_ranks)
+      throw InputError(fmt::format(
+          "{}: the {} method runs on one rank, and this is {} MPI ranks; only fv2d runs on "
+          "several (docs/mpi.md): start it without mpirun",
+          file.path, method.name, world.size()));
+    ctx_.ranks = &world;
+  }
   // Held until the session ends: the lock, then the record of talus's files.
   if (resume_)
     folder_.emplace(OutputFolder::reopen(out_, threads_));
@@ -128,11 +143,15 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
   std::vector<Observer*> observers;
   for (auto& e : experiments_) observers.push_back(e.get());
   loop_ = std::make_unique<RunLoop>(*sim_, observers);
-  log_ = std::make_unique<RunLog>(out_, req.log_seconds, req.log_to_stderr);
+  // Rank 0 of an MPI job alone writes the log (and the summary).
+  log_ = std::make_unique<RunLog>(ctx_.writes() ? out_ : fs::path(), req.log_seconds,
+                                  req.log_to_stderr && ctx_.writes());
   const double steps = sim_->estimated_steps();
-  log_->started(fmt::format("talus {} {} {} ({}, {} thread{}{})", version(),
+  const std::string ranks =
+      ctx_.ranks ? fmt::format(" on each of {} MPI ranks", ctx_.ranks->size()) : "";
+  log_->started(fmt::format("talus {} {} {} ({}, {} thread{}{}{})", version(),
                             resume_ ? "resumed" : "started", file.path, method.name, threads_,
-                            threads_ == 1 ? "" : "s",
+                            threads_ == 1 ? "" : "s", ranks,
                             steps >= 0.0 ? ", about " + step_count(steps) + " steps" : ""));
   loop_->progress_seconds = std::min(loop_->progress_seconds, req.log_seconds);
   loop_->progress = [this](const Progress& p) {
@@ -144,7 +163,7 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
                       summary_.estimated_wall_seconds, left, p.steps_per_s));
     }
     log_->progress(p);
-    if (request_.progress) request_.progress(p);
+    if (request_.progress && ctx_.writes()) request_.progress(p);
   };
   summary_.setup_seconds = seconds_since(t0);
   if (steps >= 0.0) summary_.estimated_steps = steps;
@@ -176,7 +195,7 @@ void RunSession::fail(const std::exception& e) {
   finished_ = true;
   fill("failed", e.what());
   try {
-    write_summary(out_, summary_);
+    if (ctx_.writes()) write_summary(out_, summary_);
   } catch (const std::exception&) {
     // On a full disk it may not fit either: the failure's own message is what counts.
   }
@@ -313,7 +332,7 @@ RunResult RunSession::finish() {
     else
       loop_->flush();  // a completed run's files are complete already
     fill(done ? "completed" : "stopped", "");
-    write_summary(out_, summary_);
+    if (ctx_.writes()) write_summary(out_, summary_);
   } catch (const std::exception& e) {
     fail(e);
     throw;

@@ -9,12 +9,14 @@
 namespace talus::run {
 
 RunLog::RunLog(const std::filesystem::path& out, double interval_seconds, bool echo)
-    : file_(out / "log.txt", std::ios::app), interval_(interval_seconds), echo_(echo) {}
+    : interval_(interval_seconds), echo_(echo) {
+  if (!out.empty()) file_.open(out / "log.txt", std::ios::app);
+}
 
 void RunLog::line(const std::string& text, bool echo) {
   const std::time_t now = std::time(nullptr);
   const std::string stamped = fmt::format("{:%Y-%m-%d %H:%M:%S} {}", fmt::localtime(now), text);
-  file_ << stamped << '\n' << std::flush;
+  if (file_.is_open()) file_ << stamped << '\n' << std::flush;
   if (echo) {
     fmt::print(stderr, "talus: {}\n", stamped);
     std::fflush(stderr);

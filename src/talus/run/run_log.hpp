@@ -15,8 +15,8 @@ namespace talus::run {
 
 class RunLog {
  public:
-  // Appends to out/log.txt (a resumed run continues its log). `echo`: also
-  // write each line to stderr.
+  // Appends to out/log.txt (a resumed run continues its log; an empty `out`:
+  // no file). `echo`: also write each line to stderr.
   RunLog(const std::filesystem::path& out, double interval_seconds, bool echo);
 
   void started(const std::string& what);

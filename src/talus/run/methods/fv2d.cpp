@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "talus/core/error.hpp"
 #include "talus/run/methods/methods.hpp"
 #include "talus/runout/grid/fv2d_builder.hpp"
 #include "talus/scenario/scenario_runout.hpp"
@@ -15,10 +16,18 @@ namespace talus::run {
 Fv2dSimulation::Fv2dSimulation(runout::RunoutScenario scenario, int threads)
     : GridSimulation(std::move(scenario), threads, &runout::build_fv2d) {}
 
+void Fv2dSimulation::distribute(const comm::Comm& ranks) {
+  if (path_.active())
+    throw InputError(
+        "fv2d on several MPI ranks: a grid on a flume path ([path]) runs on one rank only");
+  solver_.distribute(ranks);
+}
+
 void Fv2dSimulation::start(bool fresh) {
   if (!fresh) return;
   maxima_.reset(solver_.terrain().shape().cells());
   maxima_.observe(solver_);
+  maxima_.gather(solver_);
   released_ = solver_.volume();
 }
 
@@ -31,6 +40,10 @@ void Fv2dSimulation::advance(double target, double tolerance, std::int64_t max_s
     maxima_.peak_momentum = std::max(maxima_.peak_momentum, momentum);
     return momentum_stop_ = momentum < f * maxima_.peak_momentum;
   });
+  // Every call ends where the run loop writes (series, maps, checkpoint) or
+  // stops: the state and maxima whole on every rank from here on.
+  solver_.gather();
+  maxima_.gather(solver_);
 }
 
 std::vector<double> Fv2dSimulation::normal_heights() const {
@@ -112,9 +125,9 @@ Method fv2d_method() {
     return Validation{what, sc.control.duration / dt, sc.control.duration};
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
-    return create_grid_run<Fv2dSimulation>(io::parse_runout_scenario(f), ctx.threads, ctx.out,
-                                           ctx.resume, ctx.prepare);
+    return create_grid_run<Fv2dSimulation>(io::parse_runout_scenario(f), ctx);
   };
+  m.spreads_over_ranks = true;
   return m;
 }
 

@@ -12,6 +12,9 @@ class Fv2dSimulation final
     : public GridSimulation<runout::Fv2dSolver, runout::Fv2dMaxima, runout::Fv2dOutputs, double> {
  public:
   explicit Fv2dSimulation(runout::RunoutScenario scenario, int threads = 1);
+  // Steps this rank's rows of the grid (docs/mpi.md); refused for a grid on a
+  // flume path.
+  void distribute(const comm::Comm& ranks);
   // A resumed run's maxima and released volume come from its checkpoint.
   void start(bool fresh) override;
   void advance(double target, double tolerance, std::int64_t max_steps) override;

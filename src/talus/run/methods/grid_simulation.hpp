@@ -25,8 +25,10 @@ class GridSimulation : public Simulation {
  public:
   // Writes the run's files into `out` (without: none). resume = true first
   // restores the state from out/checkpoint.bin and continues the files.
-  void write_to(const std::filesystem::path& out, bool resume = false) {
+  // write = false (an MPI rank other than 0): the same schedules, no files.
+  void write_to(const std::filesystem::path& out, bool resume = false, bool write = true) {
     checkpoint_ = out / "checkpoint.bin";
+    if (!write) return;
     if (resume) {
       runout::RunoutResults path;
       const auto count = runout::load_checkpoint(solver_, maxima_, released_, path, checkpoint_);
@@ -75,8 +77,9 @@ class GridSimulation : public Simulation {
     const auto& g = solver_.terrain().shape();
     auto grid = [&](const char* name, const char* unit, const std::vector<double>& field) {
       // Read-only: the view drops its write flag.
-      return StateArray{name, unit, StateArray::Type::Float64, const_cast<double*>(field.data()),
-                        {g.ny, g.nx}, false};
+      return StateArray{
+          name,         unit, StateArray::Type::Float64, const_cast<double*>(field.data()),
+          {g.ny, g.nx}, false};
     };
     std::vector<StateArray> out;
     for (const auto& [name, unit, field] : solver_fields()) out.push_back(grid(name, unit, *field));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "talus/core/team_segments.hpp"
+#include "talus/run/method.hpp"
 #include "talus/run/simulation.hpp"
 #include "talus/runout/builder.hpp"
 #include "talus/runout/grid/fv2d_maxima.hpp"
@@ -97,11 +98,12 @@ class DanSimulation : public Simulation {
   bool stopped_ = false;
 };
 
-// Writes the resolved scenario into out/scenario.toml and reads it back: a
-// fresh run starts from the numbers a resumed one will read (an angle through
-// degrees and back may differ in its last bit).
+// Writes the resolved scenario into out/scenario.toml (unless `write` is
+// false: an MPI rank other than 0) and reads it back: a fresh run starts from
+// the numbers a resumed one will read (an angle through degrees and back may
+// differ in its last bit), on every rank alike.
 runout::RunoutScenario write_resolved_runout(const runout::RunoutScenario& scenario,
-                                             const std::filesystem::path& out);
+                                             const std::filesystem::path& out, bool write = true);
 
 // The output intervals of a grid model's run (fv2d, two-phase): series
 // always; checkpoints and snapshot maps only when asked for and with files.
@@ -112,16 +114,20 @@ nlohmann::json grid_resolved(const runout::GridSpec& grid, int threads);
 // A grid model's run as the registry creates it: parsed and built before
 // the folder is made (bad input leaves nothing behind); a fresh run starts
 // from the resolved scenario it writes (write_resolved_runout).
+// On several ranks (a model that spreads over them), rank 0 makes the folder
+// and writes; the others compute alike, without files.
 template <class GridSimulation>
-std::unique_ptr<Simulation> create_grid_run(runout::RunoutScenario scenario, int threads,
-                                            const std::filesystem::path& out, bool resume,
-                                            const std::function<void()>& prepare) {
-  auto sim = std::make_unique<GridSimulation>(scenario, threads);
-  if (!resume) {
-    prepare();
-    sim = std::make_unique<GridSimulation>(write_resolved_runout(scenario, out), threads);
+std::unique_ptr<Simulation> create_grid_run(runout::RunoutScenario scenario,
+                                            const RunContext& ctx) {
+  auto sim = std::make_unique<GridSimulation>(scenario, ctx.threads);
+  if (!ctx.resume) {
+    if (ctx.writes()) ctx.prepare();
+    sim = std::make_unique<GridSimulation>(write_resolved_runout(scenario, ctx.out, ctx.writes()),
+                                           ctx.threads);
   }
-  sim->write_to(out, resume);
+  if constexpr (requires { sim->distribute(*ctx.ranks); })
+    if (ctx.ranks && ctx.ranks->size() > 1) sim->distribute(*ctx.ranks);
+  sim->write_to(ctx.out, ctx.resume, ctx.writes());
   return sim;
 }
 

@@ -19,10 +19,11 @@ std::string still_moving(double time, double max_speed) {
 }
 
 runout::RunoutScenario write_resolved_runout(const runout::RunoutScenario& scenario,
-                                             const std::filesystem::path& out) {
+                                             const std::filesystem::path& out, bool write) {
   const auto path = out / "scenario.toml";
-  io::write_file_atomically(path, io::runout_scenario_to_toml(scenario));
-  return io::parse_runout_scenario(io::load_scenario_file(path.string(), {}));
+  const std::string text = io::runout_scenario_to_toml(scenario);
+  if (write) io::write_file_atomically(path, text);
+  return io::parse_runout_scenario(io::load_scenario_text(text, path.string()));
 }
 
 nlohmann::json runup_json(const runout::RunUp& u) {

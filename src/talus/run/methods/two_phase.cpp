@@ -126,8 +126,7 @@ Method two_phase_method() {
     return Validation{what, sc.control.duration / dt, sc.control.duration};
   };
   m.create = [](const io::ScenarioFile& f, const RunContext& ctx) {
-    return create_grid_run<TwoPhaseSimulation>(io::parse_runout_scenario(f), ctx.threads, ctx.out,
-                                               ctx.resume, ctx.prepare);
+    return create_grid_run<TwoPhaseSimulation>(io::parse_runout_scenario(f), ctx);
   };
   return m;
 }

@@ -123,6 +123,7 @@ void Fv2dSolver::distribute(const comm::Comm& comm) {
   comm_ = &comm;
   blocks_ = blocks;
   j0_ = blocks.first(comm.rank()), j1_ = blocks.first(comm.rank() + 1);
+  complete_ = true;  // every rank built the same state
 }
 
 int Fv2dSolver::hi(int h) const {
@@ -144,26 +145,30 @@ void Fv2dSolver::exchange_halo(FlowState& s) {
 }
 
 void Fv2dSolver::gather() {
-  if (comm_->size() == 1) return;
+  if (comm_->size() == 1 || complete_) return;
   std::vector<std::size_t> counts, offsets;
   blocks_.layout(terrain_.shape().nx, counts, offsets);
   for (auto* a : {&s_.h, &s_.hu, &s_.hv, &k_}) comm_->all_gather(a->data(), counts, offsets);
+  complete_ = true;
 }
 
 template <class F>
 double Fv2dSolver::row_ordered_sum(F f) const {
   const auto& g = terrain_.shape();
   const Index nx = static_cast<Index>(g.nx);
+  const Index first = complete_ ? 0 : j0_, end = complete_ ? static_cast<Index>(g.ny) : j1_;
   row_sums_.assign(g.ny, 0.0);
 #pragma omp parallel for schedule(static)
-  for (Index j = j0_; j < j1_; ++j) {
+  for (Index j = first; j < end; ++j) {
     double sum = 0.0;
     for (Index c = j * nx; c < (j + 1) * nx; ++c) sum += f(c);
     row_sums_[j] = sum;
   }
-  std::vector<std::size_t> counts, offsets;
-  blocks_.layout(1, counts, offsets);
-  comm_->all_gather(row_sums_.data(), counts, offsets);
+  if (!complete_) {
+    std::vector<std::size_t> counts, offsets;
+    blocks_.layout(1, counts, offsets);
+    comm_->all_gather(row_sums_.data(), counts, offsets);
+  }
   double sum = 0.0;
   for (double r : row_sums_) sum += r;
   return sum;
@@ -188,6 +193,7 @@ void Fv2dSolver::set_state(const FlowState& state) {
       throw InputError(
           fmt::format("fv2d: cell {} of a state is outside the domain but not empty", c));
   s_ = state;
+  complete_ = true;
 }
 
 void Fv2dSolver::restore(const FlowState& state, std::vector<double> k, double outflow) {
@@ -238,6 +244,10 @@ double Fv2dSolver::momentum_sum() const {
 double Fv2dSolver::max_speed() const {
   const std::size_t nx = terrain_.shape().nx;
   double m = 0.0;
+  if (complete_) {
+    for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, speed(c));
+    return m;
+  }
   for (std::size_t c = j0_ * nx; c < j1_ * nx; ++c) m = std::max(m, speed(c));
   return comm_->max(m);
 }
@@ -245,6 +255,10 @@ double Fv2dSolver::max_speed() const {
 double Fv2dSolver::max_height() const {
   const std::size_t nx = terrain_.shape().nx;
   double m = 0.0;
+  if (complete_) {
+    for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, normal_height(c));
+    return m;
+  }
   for (std::size_t c = j0_ * nx; c < j1_ * nx; ++c) m = std::max(m, normal_height(c));
   return comm_->max(m);
 }
@@ -256,8 +270,10 @@ double Fv2dSolver::stable_time_step() const {
   const Index nx = static_cast<Index>(g.nx);
   double rate = 0.0;
   bool wet = false;
+  const Index first = complete_ ? 0 : j0_ * nx;
+  const Index end = complete_ ? nx * static_cast<Index>(g.ny) : j1_ * nx;
 #pragma omp parallel for schedule(static) reduction(max : rate) reduction(|| : wet)
-  for (Index c = j0_ * nx; c < j1_ * nx; ++c) {
+  for (Index c = first; c < end; ++c) {
     const double h = s_.h[c];
     if (h <= p_.dry_depth) continue;
     wet = true;
@@ -265,8 +281,8 @@ double Fv2dSolver::stable_time_step() const {
     const double u = s_.hu[c] / h, v = s_.hv[c] / h;
     rate = std::max(rate, (std::abs(u) + a) / g.dx + (std::abs(v) + a) / g.dy);
   }
-  rate = comm_->max(rate);
-  if (rate == 0.0 && !comm_->any(wet)) return std::numeric_limits<double>::infinity();
+  if (!complete_) rate = comm_->max(rate), wet = comm_->any(wet);
+  if (rate == 0.0 && !wet) return std::numeric_limits<double>::infinity();
   // Gravity can set still material moving within a step even where no wave
   // speed limits it (k = 0, or everything at rest): it must not cross more
   // than `courant` of a cell in one step from rest, g dt^2 <= courant min(dx, dy).
@@ -529,6 +545,7 @@ void Fv2dSolver::step(double dt) {
     s_.hv[c] = 0.5 * (s_.hv[c] + stage2_.hv[c]);
   }
   exchange_halo(s_);
+  complete_ = comm_->size() == 1;
   s_.time += dt;
   outflow_ += 0.5 * (o1 + o2);
 }

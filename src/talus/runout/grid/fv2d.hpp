@@ -96,11 +96,16 @@ class Fv2dSolver {
   // Spreads the rows over the ranks of `comm`, which must outlive the
   // solver. Every rank still holds the whole grid: the work is divided, the
   // memory not yet. Throws InputError when a rank would get fewer than
-  // kHaloRows rows. From then on stable_time_step, step, the sums and maxima
-  // and gather are collective: every rank calls them, in the same order.
+  // kHaloRows rows. From then on step and gather are collective (every rank
+  // calls them, in the same order), and so are stable_time_step, the sums
+  // and the maxima between a step and the next gather; while the state is
+  // complete on every rank (before the first step, after gather) they are
+  // computed on each rank alone, with the same bits.
   void distribute(const comm::Comm& comm);
   // Completes state() and the earth-pressure coefficients on every rank.
   void gather();
+  const comm::Comm& ranks() const { return *comm_; }
+  const comm::RowBlocks& blocks() const { return blocks_; }
   int first_row() const { return j0_; }
   int end_row() const { return j1_; }
   static constexpr int kHaloRows = 3;
@@ -170,7 +175,8 @@ class Fv2dSolver {
   std::vector<double> row_outflow_;       // a stage's outflow per row
   const comm::Comm* comm_;                // the ranks; one unless distributed
   comm::RowBlocks blocks_;
-  int j0_ = 0, j1_ = 0;  // this rank's rows
+  int j0_ = 0, j1_ = 0;   // this rank's rows
+  bool complete_ = true;  // the state is whole on this rank (no collective needed)
 };
 
 }  // namespace talus::runout

@@ -18,7 +18,12 @@ struct Fv2dMaxima {
   double peak_speed = 0.0, peak_height = 0.0;     // over all cells and times
   double peak_momentum = 0.0;  // of Fv2dSolver::momentum_sum, where a stop rule reads it
   void reset(std::size_t cells);
+  // Takes the solver's state of this moment into the maxima, on this rank's
+  // rows (Fv2dSolver::distribute).
   void observe(const Fv2dSolver& solver);
+  // Completes the maps and the peaks on every rank of a distributed solver
+  // (collective); nothing on one rank.
+  void gather(const Fv2dSolver& solver);
 };
 
 }  // namespace talus::runout
