@@ -6,7 +6,8 @@ transition over 100 m), with a shallow gully down its middle; a 4 m high
 barrier across the run-out as a separate obstacle raster; and a 60 m x 40 m
 release area, 3 m thick, near the top. 90 x 50 cells of 5 m (450 m x 250 m),
 lower-left corner at (600000, 5200000).
-Usage: make_runout_terrain.py OUT_DIR   (the bundled grids: scenarios/runout/runout_terrain)
+Usage: make_runout_terrain.py OUT_DIR [CELL]   (the bundled grids: scenarios/runout/runout_terrain;
+CELL, default 5 m: the same terrain on finer cells, for benchmarks: bench/mpi_fv2d.sh)
 """
 import math
 import os
@@ -36,7 +37,11 @@ def write(path, value):
 
 
 def main():
+    global NX, NY, CELL
     out = sys.argv[1]
+    if len(sys.argv) > 2:  # the same 450 m x 250 m on other cells
+        CELL = float(sys.argv[2])
+        NX, NY = round(450.0 / CELL), round(250.0 / CELL)
     os.makedirs(out, exist_ok=True)
     write(os.path.join(out, "terrain.asc"), bed)
     write(os.path.join(out, "barrier.asc"),
