@@ -3,9 +3,9 @@
 # holds the same files as a one-rank run, byte for byte (series, maps,
 # rasters, snapshots, checkpoint, scenario.toml) and summary.json the same
 # metrics; only rank 0 writes, and the log says how many ranks ran. A run on
-# two ranks killed after a checkpoint resumes on one rank to the same files.
-# Everything else under mpirun is refused with exit status 2: another method,
-# --resume, another command. Args: <talus binary> <source dir>.
+# two ranks killed after a checkpoint resumes on one rank, and on two, to the
+# same files. Everything else under mpirun is refused with exit status 2 (once,
+# by rank 0): another method, a finished run's --resume, another command. Args: <talus binary> <source dir>.
 source "$(dirname "$0")/../app/check_lib.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 mpi() { mpirun -n "$1" --oversubscribe "${@:2}"; }
@@ -38,16 +38,22 @@ check "two ranks: still going when killed" 'kill -0 $pid 2>/dev/null'
 kill -9 $pid; wait $pid 2>/dev/null
 pkill -9 -f "talus run $scenario --quiet --out $tmp/killed" 2>/dev/null
 sleep 0.2
+cp -r "$tmp/killed" "$tmp/killed2"
 "$talus" run --resume "$tmp/killed" --quiet >"$tmp/out" 2>&1; rc=$?
 check_rc "resumed on one rank" "$tmp/out"
 check "resumed on one rank: the same files and metrics" 'same_run "$tmp/one" "$tmp/killed" || { cat "$tmp/diff"; false; }'
+mpi 2 "$talus" run --resume "$tmp/killed2" --quiet >"$tmp/out" 2>&1; rc=$?
+check_rc "resumed on two ranks" "$tmp/out"
+check "resumed on two ranks: the same files and metrics" 'same_run "$tmp/one" "$tmp/killed2" || { cat "$tmp/diff"; false; }'
+check "resumed on two ranks: the log says so" 'grep -q "resumed.*each of 2 MPI ranks" "$tmp/killed2/log.txt"'
 
 mpi 2 "$talus" run "$src/scenarios/dem/collapse_2d.toml" --out "$tmp/dem" >"$tmp/out" 2>&1; rc=$?
 check "DEM on two ranks refused (exit 2, names fv2d), nothing written" \
   '[ $rc -eq 2 ] && grep -q "only fv2d runs on" "$tmp/out" && [ ! -e "$tmp/dem" ]'
 check "the refusal printed once" '[ $(grep -c "only fv2d runs on" "$tmp/out") -eq 1 ]'
 mpi 2 "$talus" run --resume "$tmp/one" >"$tmp/out" 2>&1; rc=$?
-check "--resume on two ranks refused" '[ $rc -eq 2 ] && grep -q "resume on one rank" "$tmp/out"'
+check "--resume of a finished run on two ranks refused once" \
+  '[ $rc -eq 2 ] && [ $(grep -c "nothing to resume" "$tmp/out") -eq 1 ]'
 mpi 2 "$talus" validate "$scenario" >"$tmp/out" 2>&1; rc=$?
 check "validate on two ranks refused" '[ $rc -eq 2 ] && grep -q "started on 2 MPI ranks" "$tmp/out"'
 mkdir -p "$tmp/taken" && touch "$tmp/taken/mine"

@@ -103,11 +103,6 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
           req.threads, req.threads == 1 ? "" : "s", recorded));
   }
   omp_set_num_threads(threads_);
-  if (resume_ && comm::Comm::world().size() > 1)
-    throw InputError(fmt::format(
-        "{}: --resume on several MPI ranks is not supported yet; resume on one rank (the "
-        "results are the same bits on any number of ranks)",
-        req.resume.string()));
   const auto file = load(req, out_);
   if (file.method == "compare")
     throw InputError(file.path + ": a comparison file; run it with `talus compare " + file.path +
@@ -125,7 +120,7 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
     ctx_.ranks = &world;
   }
   // Held until the session ends: the lock, then the record of talus's files.
-  if (resume_)
+  if (resume_ && ctx_.writes())
     folder_.emplace(OutputFolder::reopen(out_, threads_));
   else
     ctx_.prepare = [this] { folder_.emplace(OutputFolder::claim(out_, request_.force, threads_)); };

@@ -25,16 +25,17 @@ class GridSimulation : public Simulation {
  public:
   // Writes the run's files into `out` (without: none). resume = true first
   // restores the state from out/checkpoint.bin and continues the files.
-  // write = false (an MPI rank other than 0): the same schedules, no files.
+  // write = false (an MPI rank other than 0): the same state and schedules,
+  // no files.
   void write_to(const std::filesystem::path& out, bool resume = false, bool write = true) {
     checkpoint_ = out / "checkpoint.bin";
-    if (!write) return;
     if (resume) {
       runout::RunoutResults path;
       const auto count = runout::load_checkpoint(solver_, maxima_, released_, path, checkpoint_);
       path_.restore(std::move(path));
       steps_ = count.steps, last_dt_ = count.last_time_step;
     }
+    if (!write) return;
     files_ = std::make_unique<Outputs>(out, scenario_.grid, resume, time(),
                                        scenario_.control.snapshot_interval > 0.0);
     outputs_ = std::make_unique<FilesWithCheckpoint<Outputs, Solver>>(*files_, solver_, [this] {
