@@ -39,4 +39,29 @@ cannot_write dan 8 path.csv "$src/scenarios/runout/runout_flume_A.toml"
 cannot_write dem 8 particles_000000.vtu "$src/scenarios/dem/collapse_2d.toml" --set run.duration=0.05
 cannot_write mpm 8 particles_000000.vtu "$src/scenarios/mpm/mpm_column_collapse.toml" \
   --set run.duration=0.05
+
+# A disk that stays full: a 200 KiB tmpfs whose free space the run's own
+# series.csv (a row every step) uses up. The summary saying why must still fit:
+# the run gives up the 64 KiB it held back (.talus-reserve) before writing it.
+# Needs to mount (root, as in CI); skipped with a note otherwise.
+disk=$tmp/disk
+mkdir -p "$disk"
+if mount -t tmpfs -o size=200k tmpfs "$disk" 2>/dev/null; then
+  trap 'umount "$disk" 2>/dev/null; rm -rf "$tmp"' EXIT
+  timeout 300 "$talus" run "$src/scenarios/dem/collapse_2d.toml" --quiet --out "$disk/run" \
+    --set run.duration=10 --set output.series_interval=1e-9 --set output.snapshots=false \
+    >"$tmp/err" 2>&1; rc=$?
+  check "full disk: exits 1" '[ $rc -eq 1 ] || { cat "$tmp/err"; false; }'
+  check "full disk: the disk was full" 'grep -q "No space left" "$tmp/err" || { cat "$tmp/err"; false; }'
+  /usr/bin/python3 - "$disk/run/summary.json" >"$tmp/py" 2>&1 <<'PY'; rc=$?
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["status"] == "failed" and "series.csv" in s["error"], (s["status"], s["error"])
+PY
+  check_rc "full disk: summary.json says failed, naming series.csv"
+  check "full disk: the reserve is gone" '[ ! -e "$disk/run/.talus-reserve" ]'
+  umount "$disk"
+else
+  echo "note: cannot mount a tmpfs here (not root?): the full-disk case is not tried"
+fi
 finish disk_full

@@ -25,10 +25,25 @@ namespace {
 
 constexpr const char* kRecord = ".talus-run";
 constexpr const char* kLock = ".talus-lock";
+// Space held back while the run writes, given up when it fails, so that the
+// summary saying why still fits on a disk the run filled (a summary is a few
+// kB, with the resolved scenario).
+constexpr const char* kReserve = ".talus-reserve";
+constexpr std::size_t kReserveBytes = 64 * 1024;
 constexpr const char* kRunning = "talus run folder: running";
 constexpr const char* kFinished = "talus run folder: finished";
 
-bool is_own(const std::string& name) { return name == kRecord || name == kLock; }
+bool is_own(const std::string& name) {
+  return name == kRecord || name == kLock || name == kReserve;
+}
+
+// Best effort: on a disk already full there is nothing to hold back.
+void reserve_space(const fs::path& out) {
+  std::ofstream file(out / kReserve, std::ios::binary | std::ios::trunc);
+  const std::string block(kReserveBytes, '\0');
+  file.write(block.data(), static_cast<std::streamsize>(block.size()));
+  file.flush();
+}
 
 constexpr const char* kScenario = "scenario ";
 constexpr const char* kThreads = "threads ";
@@ -177,6 +192,7 @@ OutputFolder OutputFolder::claim(const fs::path& out, bool force, int threads) {
   }
   write_record(out, false, folder.scenario_, folder.threads_);
   folder.recording_ = true;
+  reserve_space(out);
   return folder;
 }
 
@@ -194,7 +210,13 @@ OutputFolder OutputFolder::reopen(const fs::path& out, int threads) {
         (out / "scenario.toml").string()));
   write_record(out, false, folder.scenario_, folder.threads_);
   folder.recording_ = true;
+  reserve_space(out);
   return folder;
+}
+
+void OutputFolder::free_reserve() noexcept {
+  std::error_code ec;
+  if (lock_ >= 0) fs::remove(path_ / kReserve, ec);
 }
 
 void OutputFolder::scenario_written() {
@@ -241,6 +263,7 @@ void OutputFolder::discard() noexcept {
 
 void OutputFolder::release() noexcept {
   if (lock_ < 0) return;
+  free_reserve();
   try {
     if (recording_) write_record(path_, true, scenario_, threads_);
   } catch (...) {

@@ -29,6 +29,9 @@ class OutputFolder {
   static int recorded_threads(const std::filesystem::path& out);
   // Records the checksum of the scenario.toml the run just wrote.
   void scenario_written();
+  // Gives up the space claim() and reopen() hold back (`.talus-reserve`,
+  // 64 KiB), so that the summary of a run that failed on a full disk fits.
+  void free_reserve() noexcept;
   // The run was refused before it started (bad input found while building):
   // removes what it wrote, and the folder itself when claim() created it, so
   // that the refusal leaves nothing behind.

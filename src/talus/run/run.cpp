@@ -190,6 +190,7 @@ void RunSession::fail(const std::exception& e) {
   finished_ = true;
   fill("failed", e.what());
   try {
+    if (folder_) folder_->free_reserve();
     if (ctx_.writes()) write_summary(out_, summary_);
   } catch (const std::exception&) {
     // On a full disk it may not fit either: the failure's own message is what counts.
