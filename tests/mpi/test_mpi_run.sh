@@ -8,6 +8,9 @@
 # by rank 0): another method, a finished run's --resume, another command. Args: <talus binary> <source dir>.
 source "$(dirname "$0")/../app/check_lib.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
+# Under the sanitizers: OpenMPI's leaks named by tests/lsan.supp (see tests/CMakeLists.txt).
+export OMPI_MCA_mca_base_component_disable_dlclose=1
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}fast_unwind_on_malloc=0"
 mpi() { mpirun -n "$1" --oversubscribe "${@:2}"; }
 scenario=$src/tests/data/scenarios/fv2d_resume.toml
 
