@@ -32,6 +32,8 @@ for n in 2 4; do
   check "$n ranks: the same files and metrics as one" 'same_run "$tmp/one" "$tmp/n$n" || { cat "$tmp/diff"; false; }'
   check "$n ranks: snapshots and a checkpoint written" '[ -f "$tmp/n$n/snapshots/flow.pvd" ] && [ -f "$tmp/n$n/checkpoint.bin" ]'
   check "$n ranks: the log says so" 'grep -q "each of $n MPI ranks" "$tmp/n$n/log.txt"'
+  check "$n ranks: summary.json says so" \
+    '/usr/bin/python3 -c "import json,sys; assert json.load(open(sys.argv[1]))[\"run\"][\"mpi_ranks\"] == $n" "$tmp/n$n/summary.json"'
 done
 
 # Killed on two ranks after a checkpoint, resumed on one.

@@ -118,6 +118,7 @@ RunSession::RunSession(const RunRequest& req) : request_(req), resume_(!req.resu
           "several (docs/mpi.md): start it without mpirun",
           file.path, method.name, world.size()));
     ctx_.ranks = &world;
+    summary_.mpi_ranks = world.size();
   }
   // Held until the session ends: the lock, then the record of talus's files.
   if (resume_ && ctx_.writes())

@@ -23,6 +23,7 @@ nlohmann::json summary_json(const SummaryInput& in) {
               {r.rate_key, in.loop_seconds > 0 ? r.items * in.steps / in.loop_seconds : 0.0}};
   if (in.estimated_steps >= 0.0) j["run"]["estimated_steps"] = in.estimated_steps;
   if (in.estimated_wall_seconds >= 0.0) j["run"]["estimated_wall_s"] = in.estimated_wall_seconds;
+  if (in.mpi_ranks > 1) j["run"]["mpi_ranks"] = in.mpi_ranks;
   for (const auto& [k, v] : r.run_extra.items()) j["run"][k] = v;
   j["metrics"] = r.metrics;
   if (!r.warnings.empty()) j["warnings"] = r.warnings;

@@ -21,6 +21,7 @@ struct SummaryInput {
   // so far plus the steps left at the rate so far); < 0: the run ended first.
   double estimated_wall_seconds = -1.0;
   double simulated_time = 0.0, loop_seconds = 0.0, setup_seconds = 0.0;
+  int mpi_ranks = 1;  // the MPI ranks the run stepped on (docs/mpi.md)
   nlohmann::json experiments = nlohmann::json::object();  // name -> part
 };
 
