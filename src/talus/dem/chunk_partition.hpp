@@ -132,16 +132,13 @@ class ChunkPartition {
     const int n = static_cast<int>(p.size());
     if (size() == nc && built_ == nl.builds && n_ == n) return;
     chunks_.resize(nc);
-    if (kept.build == nl.builds && kept.particles == n &&
-        kept.starts.size() == static_cast<std::size_t>(nc)) {
-      cut_at(kept.starts, p, nl);
-    } else {
-      cut(nc, p, nl);
+    if (kept.build != nl.builds || kept.particles != n ||
+        kept.starts.size() != static_cast<std::size_t>(nc)) {
+      cut(nc, p, nl, kept.starts);
       kept.build = nl.builds;
       kept.particles = n;
-      kept.starts.resize(nc);
-      for (int c = 0; c < nc; ++c) kept.starts[c] = chunks_[c].p0;
     }
+    cut_at(kept.starts, p, nl);
     const auto& pairs = nl.pairs;
     for (auto& s : chunks_) {
       s.lo = n;
@@ -280,9 +277,11 @@ class ChunkPartition {
     p.contacts[i] = n;
   }
 
-  // The cut balances cost() over the chunks, with the contacts as counted in
-  // the last step. Deterministic: it depends on the state only.
-  void cut(int nc, const Particles<D>& p, const NeighbourList<D>& nl) {
+  // The first particle of each of `nc` chunks, balancing cost() over them
+  // with the contacts as counted in the last step. Deterministic: it depends
+  // on the state only.
+  void cut(int nc, const Particles<D>& p, const NeighbourList<D>& nl,
+           std::vector<int32_t>& starts) {
     const int n = static_cast<int>(p.size());
     const auto& pairs = nl.pairs;
     const std::size_t np = pairs.size();
@@ -294,21 +293,21 @@ class ChunkPartition {
       while (k < np && pairs[k].i == i) ++k;
       cost_[i + 1] = cost_[i] + cost(p.contacts[i], k - first);
     }
-    starts_.resize(nc);
+    starts.resize(nc);
     for (int c = 0; c < nc; ++c) {
       const double target = cost_[n] * c / nc;
-      int p0 = c == 0 ? 0
-                      : static_cast<int>(std::lower_bound(cost_.begin(), cost_.end(), target) -
-                                         cost_.begin());
-      starts_[c] = std::clamp(p0, c == 0 ? 0 : starts_[c - 1], n);
+      const int p0 = c == 0
+                         ? 0
+                         : static_cast<int>(std::lower_bound(cost_.begin(), cost_.end(), target) -
+                                            cost_.begin());
+      starts[c] = std::clamp(p0, c == 0 ? 0 : starts[c - 1], n);
     }
-    cut_at(starts_, p, nl);
   }
 
   // Chunk c's particles start at starts[c] (ascending, starts[0] = 0); its
   // pairs are those whose first particle it holds.
-  template <class Starts>
-  void cut_at(const Starts& starts, const Particles<D>& p, const NeighbourList<D>& nl) {
+  void cut_at(const std::vector<int32_t>& starts, const Particles<D>& p,
+              const NeighbourList<D>& nl) {
     const int n = static_cast<int>(p.size()), nc = size();
     const auto& pairs = nl.pairs;
     const std::size_t np = pairs.size();
@@ -330,7 +329,6 @@ class ChunkPartition {
   std::vector<Chunk> chunks_;
   std::vector<Flag> scattered_, finished_;
   std::vector<double> cost_;  // cumulative cost of the particles
-  std::vector<int> starts_;   // the cut being made
   ChunkCut scratch_cut_;      // for callers that keep no cut of their own
   int built_ = -1;            // neighbour-list build of the cut
   int n_ = -1;                // particle count of the cut

@@ -152,11 +152,21 @@ void Fv2dSolver::gather() {
   complete_ = true;
 }
 
+double Fv2dSolver::rows_in_order(std::vector<double>& rows, bool gather) const {
+  if (gather) {
+    std::vector<std::size_t> counts, offsets;
+    blocks_.layout(1, counts, offsets);
+    comm_->all_gather(rows.data(), counts, offsets);
+  }
+  double sum = 0.0;
+  for (double r : rows) sum += r;
+  return sum;
+}
+
 template <class F>
 double Fv2dSolver::row_ordered_sum(F f) const {
   const auto& g = terrain_.shape();
-  const Index nx = static_cast<Index>(g.nx);
-  const Index first = complete_ ? 0 : j0_, end = complete_ ? static_cast<Index>(g.ny) : j1_;
+  const Index nx = static_cast<Index>(g.nx), first = read_begin(), end = read_end();
   row_sums_.assign(g.ny, 0.0);
 #pragma omp parallel for schedule(static)
   for (Index j = first; j < end; ++j) {
@@ -164,14 +174,15 @@ double Fv2dSolver::row_ordered_sum(F f) const {
     for (Index c = j * nx; c < (j + 1) * nx; ++c) sum += f(c);
     row_sums_[j] = sum;
   }
-  if (!complete_) {
-    std::vector<std::size_t> counts, offsets;
-    blocks_.layout(1, counts, offsets);
-    comm_->all_gather(row_sums_.data(), counts, offsets);
-  }
-  double sum = 0.0;
-  for (double r : row_sums_) sum += r;
-  return sum;
+  return rows_in_order(row_sums_, !complete_);
+}
+
+template <class F>
+double Fv2dSolver::cell_max(F f) const {
+  const Index nx = static_cast<Index>(terrain_.shape().nx);
+  double m = 0.0;
+  for (Index c = read_begin() * nx; c < read_end() * nx; ++c) m = std::max(m, f(c));
+  return complete_ ? m : comm_->max(m);
 }
 
 void Fv2dSolver::find_domain_edges() {
@@ -242,25 +253,11 @@ double Fv2dSolver::momentum_sum() const {
 }
 
 double Fv2dSolver::max_speed() const {
-  const std::size_t nx = terrain_.shape().nx;
-  double m = 0.0;
-  if (complete_) {
-    for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, speed(c));
-    return m;
-  }
-  for (std::size_t c = j0_ * nx; c < j1_ * nx; ++c) m = std::max(m, speed(c));
-  return comm_->max(m);
+  return cell_max([&](Index c) { return speed(c); });
 }
 
 double Fv2dSolver::max_height() const {
-  const std::size_t nx = terrain_.shape().nx;
-  double m = 0.0;
-  if (complete_) {
-    for (std::size_t c = 0; c < s_.h.size(); ++c) m = std::max(m, normal_height(c));
-    return m;
-  }
-  for (std::size_t c = j0_ * nx; c < j1_ * nx; ++c) m = std::max(m, normal_height(c));
-  return comm_->max(m);
+  return cell_max([&](Index c) { return normal_height(c); });
 }
 
 bool Fv2dSolver::at_rest() const { return max_speed() < kRestSpeed; }
@@ -270,8 +267,7 @@ double Fv2dSolver::stable_time_step() const {
   const Index nx = static_cast<Index>(g.nx);
   double rate = 0.0;
   bool wet = false;
-  const Index first = complete_ ? 0 : j0_ * nx;
-  const Index end = complete_ ? nx * static_cast<Index>(g.ny) : j1_ * nx;
+  const Index first = read_begin() * nx, end = read_end() * nx;
 #pragma omp parallel for schedule(static) reduction(max : rate) reduction(|| : wet)
   for (Index c = first; c < end; ++c) {
     const double h = s_.h[c];
@@ -523,12 +519,7 @@ double Fv2dSolver::euler_stage(const FlowState& in, FlowState& out, double dt) {
     if (j >= j0_ && j < j1_ && !quiet_[f.cell])
       row_outflow_[j] += f.outward_length * (f.normal_x ? fx_[0][f.face] : fy_[0][f.face]);
   }
-  std::vector<std::size_t> counts, offsets;
-  blocks_.layout(1, counts, offsets);
-  comm_->all_gather(row_outflow_.data(), counts, offsets);
-  double out_flux = 0.0;
-  for (double r : row_outflow_) out_flux += r;
-  return out_flux * dt;
+  return rows_in_order(row_outflow_, true) * dt;
 }
 
 void Fv2dSolver::step(double dt) {

@@ -151,9 +151,18 @@ class Fv2dSolver {
   // Rows [j0 - h, j1 + h) clipped to the grid.
   int lo(int h) const { return j0_ - h > 0 ? j0_ - h : 0; }
   int hi(int h) const;
+  // The rows whose state this rank holds: all while it is complete, else its block.
+  int read_begin() const { return complete_ ? 0 : j0_; }
+  int read_end() const { return complete_ ? static_cast<int>(terrain_.shape().ny) : j1_; }
+  // The sum of per-row partial sums in row order, once `gather` has brought
+  // the other ranks' rows (each rank filled its own).
+  double rows_in_order(std::vector<double>& rows, bool gather) const;
   // sum over cells of f(c), row by row, then the rows in order (all ranks).
   template <class F>
   double row_ordered_sum(F f) const;
+  // max over cells of f(c) >= 0 (all ranks).
+  template <class F>
+  double cell_max(F f) const;
 
   Terrain terrain_;
   Fv2dParams p_;
