@@ -156,6 +156,33 @@ TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
   check_membranes_resume<2>(sc, 300, "2d");
 }
 
+// The same fall into a bag whose sand slips on it (its own velocity field,
+// field_contact.hpp), onto an FE line held at both ends in the soil's field:
+// nothing of the bag's field is carried between steps, so the membranes'
+// checkpointed state is all a resume needs.
+TEST(MpmCheckpoint, RunWithSlippingMembraneResumesBitForBit) {
+  auto sc = block_on_turning_plate();
+  sc.rigid_bodies.clear();
+  MembraneParams bag;
+  bag.name = "bag";
+  bag.points = {Vec3(0.145, 0.115, 0.0), Vec3(0.255, 0.115, 0.0), Vec3(0.255, 0.175, 0.0),
+                Vec3(0.145, 0.175, 0.0)};
+  bag.closed = true;
+  bag.spacing = 0.005;
+  bag.stiffness = 2e4;
+  bag.areal_mass = 0.5;
+  bag.velocity = Vec3(0.0, -1.0, 0.0);
+  MembraneParams line = bag;
+  line.name = "line";
+  line.points = {Vec3(0.03, 0.11, 0.0), Vec3(0.37, 0.11, 0.0)};
+  line.closed = false;
+  line.fixed = MembraneFixed::Both;
+  line.velocity = Vec3::Zero();
+  bag.soil_friction = 0.4;
+  sc.membranes = {bag, line};
+  check_membranes_resume<2>(sc, 300, "2d_slip");
+}
+
 // 3D: a block falls onto a sheet of triangles held by its edges.
 TEST(MpmCheckpoint, RunWithTriangleMembraneResumesBitForBit) {
   MpmScenario sc;

@@ -95,6 +95,25 @@ TEST(MpmMembraneScenario, BadInputNamesFileLineAndKey) {
       load_scenario_text(kBase + "[output]\ncheckpoint_interval = 0.1\n", "m.toml")));
 }
 
+// `friction`: the membrane in its own velocity field with Coulomb contact
+// against the soil (FE only); absent, it shares the soil's field.
+TEST(MpmMembraneScenario, SoilFrictionParsesRoundTripsAndBuilds) {
+  EXPECT_LT(parse_mpm_scenario(load_scenario_text(kBase, "m.toml")).membranes[0].soil_friction,
+            0.0);
+  const std::string fe = edit(kBase, "model = \"york\"", "model = \"fe\"\nfriction = 0.45");
+  const auto sc = parse_mpm_scenario(load_scenario_text(fe, "m.toml"));
+  EXPECT_EQ(sc.membranes[0].soil_friction, 0.45);
+  const std::string resolved = mpm_scenario_to_toml(sc);
+  EXPECT_NE(resolved.find("friction = 0.45"), std::string::npos) << resolved;
+  const auto again = parse_mpm_scenario(load_scenario_text(resolved, "r.toml"));
+  EXPECT_EQ(mpm_scenario_to_json(again).dump(), mpm_scenario_to_json(sc).dump());
+  const auto solver = mpm::build_mpm<2>(sc);
+  EXPECT_TRUE(solver.membranes[0].own_field());
+  expect_error(edit(fe, "friction = 0.45", "friction = -0.1"), "[[membranes]] 'friction'");
+  expect_error(edit(kBase, "model = \"york\"", "model = \"york\"\nfriction = 0.3"),
+               "'friction': a membrane slips on the soil in the FE model only");
+}
+
 // 3D: a sheet held by its edges, a box and a sphere (bags); the resolved
 // table reads back to the same values; bad input names the key.
 const std::string k3d = R"(method = "mpm"

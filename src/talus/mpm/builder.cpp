@@ -229,7 +229,10 @@ Solver<D> build_mpm(const MpmScenario& sc) {
           throw InputError(fmt::format(
               "[[rigid_bodies]] #{}: boundary particles lie outside the [grid]", b + 1));
   }
-  for (const auto& m : sc.membranes) solver.membranes.push_back(build_membrane<D>(m, h));
+  for (const auto& m : sc.membranes) {
+    solver.membranes.push_back(build_membrane<D>(m, h));
+    solver.membranes.back().soil_friction = m.soil_friction;
+  }
   if (sc.flume) add_flume<D>(solver, sc);
   return solver;
 }

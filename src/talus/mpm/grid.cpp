@@ -98,18 +98,19 @@ void Grid<D>::clear() {
 }
 
 template <int D>
-void Grid<D>::constrain(std::vector<Vec>& field) const {
+void Grid<D>::constrain(std::vector<Vec>& field, bool friction_contacts) const {
   for (const auto& [a, mask] : constrained)
     for (int d = 0; d < D; ++d)
       if (mask & (1u << d)) field[a][d] = 0.0;
   for (std::size_t k = 0; k < friction_nodes.size(); ++k)
-    if (in_contact[k]) field[friction_nodes[k].node][friction_nodes[k].axis] = 0.0;
+    if (friction_contacts && in_contact[k])
+      field[friction_nodes[k].node][friction_nodes[k].axis] = 0.0;
   for (const auto& g : ghosts) field[g.ghost] = g.sign.cwiseProduct(field[g.mirror]);
 }
 
 template <int D>
 void Grid<D>::constrain_velocity(std::vector<Vec>& velocity, const std::vector<Vec>* old,
-                                 double flip) {
+                                 double flip, bool with_friction) {
   if (friction_nodes.empty()) return constrain(velocity);
   // The masks first: a roller or fixed face through the same node (a corner)
   // takes its components before the friction sees the tangential velocity.
@@ -122,6 +123,10 @@ void Grid<D>::constrain_velocity(std::vector<Vec>& velocity, const std::vector<V
     const double into = v[f.axis] * f.into;  // speed into the wall
     in_contact[k] = into > 0.0;
     if (!in_contact[k]) continue;
+    if (!with_friction) {
+      v[f.axis] = 0.0;
+      continue;
+    }
     // The normal velocity change the particles feel: all of it through the
     // PIC share; through FLIP's, v_new - v_old with v_old's normal component
     // zeroed as well (constrain), i.e. only the part the forces added.

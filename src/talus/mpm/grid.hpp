@@ -82,8 +82,9 @@ struct Grid {
   // components on the faces and reflects the field onto the ghost nodes. On a
   // friction face it zeroes the normal component at the nodes in contact at
   // the last constrain_velocity (the velocities before the update and the
-  // remapped ones of MUSL).
-  void constrain(std::vector<Vec>& field) const;
+  // remapped ones of MUSL). friction_contacts = false: not that last (the
+  // roller and fixed faces and the ghosts only).
+  void constrain(std::vector<Vec>& field, bool friction_contacts = true) const;
   // constrain for the updated velocity; first decides the contacts of the
   // friction faces (Bardenhagen et al. 2000 against a wall at rest, mpm.md
   // "Boundaries and contact"): at a node whose velocity points into the wall
@@ -93,8 +94,9 @@ struct Grid {
   // old, flip: the unconstrained velocities before the update and the FLIP
   // share of the particle update; with them |v_n| above is the normal
   // velocity change the particles feel, v_n - flip v_old,n.
+  // with_friction = false: the friction faces only stop what moves into them.
   void constrain_velocity(std::vector<Vec>& velocity, const std::vector<Vec>* old = nullptr,
-                          double flip = 0.0);
+                          double flip = 0.0, bool with_friction = true);
   // Adds what the particles put on ghost nodes to the mirror nodes.
   void fold(std::vector<double>& m, std::vector<Vec>& momentum, std::vector<Vec>* force) const;
 };

@@ -121,6 +121,37 @@ double Membrane<D>::total_mass() const {
   return m;
 }
 
+template <int D>
+void Membrane<D>::node_normals(std::vector<Vec>& n) const {
+  n.assign(size(), Vec::Zero());
+  double orientation = 0.0;  // > 0: the normals as computed point outward
+  if constexpr (D == 2) {
+    const std::size_t count = size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const Vec ahead = closed || i + 1 < count ? x[(i + 1) % count] : x[i];
+      const Vec behind = closed || i > 0 ? x[(i + count - 1) % count] : x[i];
+      const Vec t = ahead - behind;
+      n[i] = Vec(t.y(), -t.x());
+      // Twice the signed area: > 0 for a counter-clockwise line, whose
+      // right-hand normals point out.
+      if (closed) orientation += x[i].x() * ahead.y() - ahead.x() * x[i].y();
+    }
+  } else {
+    Vec centre = Vec::Zero();
+    for (const Vec& xi : x) centre += xi / static_cast<double>(size());
+    for (const auto& t : triangles) {
+      const Vec nt = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+      for (uint32_t i : t) n[i] += nt;
+      if (closed) orientation += ((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0 - centre).dot(nt);
+    }
+  }
+  const double sign = orientation < 0.0 ? -1.0 : 1.0;
+  for (Vec& ni : n) {
+    const double len = ni.norm();
+    if (len > 0.0) ni *= sign / len;
+  }
+}
+
 namespace {
 
 template <int D>

@@ -1,7 +1,9 @@
 #pragma once
 // Membranes in MPM (mpm.md "Membranes in MPM"; Hamad et al. 2012/2014): a thin
 // tension-only sheet (a geotextile) that moves with the background grid like
-// the material points and shares its velocity field with the soil (no slip).
+// the material points. By default it shares its velocity field with the soil
+// (no slip); with a soil friction it moves in a field of its own, in Coulomb
+// contact with the soil's (field_contact.hpp), so sand slips along it.
 // Two models, chosen by name:
 //  - York et al. (1999): a single line of material points; the stress acts
 //    along the tangent t only, sigma = E eps_tt t (x) t, no compression; the
@@ -62,6 +64,9 @@ struct MembraneParams {
   bool slack_everywhere = true;  // else only inside [slack_min, slack_max]
   Vec3 slack_min = Vec3::Zero(), slack_max = Vec3::Zero();
   Vec3 velocity = Vec3::Zero();
+  // Scenario key `friction`: < 0 (absent) the membrane shares the soil's
+  // velocity field; >= 0 its own field, Coulomb mu against the soil.
+  double soil_friction = -1.0;
 };
 
 template <int D>
@@ -72,9 +77,11 @@ struct Membrane {
   std::string name;
   MembraneModel model = MembraneModel::FiniteElement;
   bool closed = false;
-  double stiffness = 0.0;      // J, N/m
-  double areal_mass = 0.0;     // mu, kg/m^2 (2D: per m of line and m of depth)
-  double poisson_ratio = 0.0;  // 3D surfaces
+  double stiffness = 0.0;       // J, N/m
+  double areal_mass = 0.0;      // mu, kg/m^2 (2D: per m of line and m of depth)
+  double poisson_ratio = 0.0;   // 3D surfaces
+  double soil_friction = -1.0;  // MembraneParams::soil_friction
+  bool own_field() const { return soil_friction >= 0.0; }
 
   // Nodes (FE) or material points (York).
   std::vector<Vec> x, v;
@@ -114,6 +121,11 @@ struct Membrane {
   // sqrt(J / ((1 - nu^2) mu)), the in-plane P wave).
   double wave_speed() const;
   double total_mass() const;
+  // Unit normals at the nodes (points): in 2D the line's right-hand normal,
+  // outward for a closed line whichever way it was drawn; in 3D the mean of
+  // the triangles' normals around the node, outward for a closed surface.
+  // An open membrane's normal has no preferred side (the contact orients it).
+  void node_normals(std::vector<Vec>& n) const;
 };
 
 // Nodes (FE) or points (York) of a membrane: the polyline resampled to the

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "talus/core/error.hpp"
+#include "talus/mpm/field_contact.hpp"
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/membrane.hpp"
 
@@ -103,103 +104,108 @@ double membrane_max_speed(const std::vector<Membrane<D>>& ms) {
   return s;
 }
 
-// Adds mass and momentum (and with forces, gravity and internal forces) of the
-// membranes to the grid's arrays, before the ghost nodes are folded.
+// Adds mass and momentum (and with forces, gravity and internal forces) of
+// membrane m to the grid's arrays, before the ghost nodes are folded. With
+// on_nodes (an FE membrane in the membranes' own field), also what its
+// contact with the soil needs (field_contact.hpp).
+template <int D, class Shape>
+void membrane_to_grid(Membrane<D>& m, Grid<D>& grid, const typename Space<D>::Vec& gravity,
+                      double half_width, bool forces, double time,
+                      MembraneNodes<D>* on_nodes = nullptr) {
+  using Vec = typename Space<D>::Vec;
+  Stencil<D, Shape> st;
+  membrane_detail::YorkStencil<D, Shape> ys;
+  std::vector<Vec> cable, unit;
+  const bool fe = m.model == MembraneModel::FiniteElement;
+  if (forces && fe) {
+    cable.assign(m.size(), Vec::Zero());
+    m.add_cable_forces(cable);
+  }
+  if (on_nodes) m.node_normals(unit);
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (!membrane_detail::on_grid(m, i)) continue;
+    const Vec mv = m.mass[i] * m.v[i];
+    Vec f = m.mass[i] * gravity;
+    if (fe) {
+      if (!st.compute(grid, m.x[i], half_width)) membrane_detail::left_grid(time, m.name, i);
+      if (forces) f += cable[i];
+      for (int k = 0; k < st.count; ++k) {
+        const auto a = st.node[k];
+        grid.mass[a] += st.w[k] * m.mass[i];
+        grid.momentum[a] += st.w[k] * mv;
+        if (forces) grid.force[a] += st.w[k] * f;
+        if (on_nodes) on_nodes->add(a, st.w[k] * m.mass[i], unit[i], -st.dx[k], m.soil_friction);
+      }
+      continue;
+    }
+    if (!ys.compute(grid, m, i)) membrane_detail::left_grid(time, m.name, i);
+    // York: V sigma = l0 lambda T t (x) t, with T = J max(eps, 0).
+    const double vs = forces ? m.rest_length[i] * m.stretch[i] * m.tension(i) : 0.0;
+    for (int k = 0; k < ys.count; ++k) {
+      const auto a = ys.node[k];
+      grid.mass[a] += ys.w[k] * m.mass[i];
+      grid.momentum[a] += ys.w[k] * mv;
+      if (forces) grid.force[a] += ys.w[k] * f - (vs * ys.g[k]) * m.tangent[i];
+    }
+  }
+}
+
+// membrane_to_grid for every membrane, all on one grid.
 template <int D, class Shape>
 void membranes_to_grid(std::vector<Membrane<D>>& ms, Grid<D>& grid,
                        const typename Space<D>::Vec& gravity, double half_width, bool forces,
                        double time) {
-  using Vec = typename Space<D>::Vec;
-  Stencil<D, Shape> st;
-  membrane_detail::YorkStencil<D, Shape> ys;
-  std::vector<Vec> cable;
-  for (auto& m : ms) {
-    const bool fe = m.model == MembraneModel::FiniteElement;
-    if (forces && fe) {
-      cable.assign(m.size(), Vec::Zero());
-      m.add_cable_forces(cable);
-    }
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      if (!membrane_detail::on_grid(m, i)) continue;
-      const Vec mv = m.mass[i] * m.v[i];
-      Vec f = m.mass[i] * gravity;
-      if (fe) {
-        if (!st.compute(grid, m.x[i], half_width)) membrane_detail::left_grid(time, m.name, i);
-        if (forces) f += cable[i];
-        for (int k = 0; k < st.count; ++k) {
-          const auto a = st.node[k];
-          grid.mass[a] += st.w[k] * m.mass[i];
-          grid.momentum[a] += st.w[k] * mv;
-          if (forces) grid.force[a] += st.w[k] * f;
-        }
-        continue;
-      }
-      if (!ys.compute(grid, m, i)) membrane_detail::left_grid(time, m.name, i);
-      // York: V sigma = l0 lambda T t (x) t, with T = J max(eps, 0).
-      const double vs = forces ? m.rest_length[i] * m.stretch[i] * m.tension(i) : 0.0;
-      for (int k = 0; k < ys.count; ++k) {
-        const auto a = ys.node[k];
-        grid.mass[a] += ys.w[k] * m.mass[i];
-        grid.momentum[a] += ys.w[k] * mv;
-        if (forces) grid.force[a] += ys.w[k] * f - (vs * ys.g[k]) * m.tangent[i];
-      }
-    }
-  }
+  for (auto& m : ms) membrane_to_grid<D, Shape>(m, grid, gravity, half_width, forces, time);
 }
 
-// Zeroes `field` on the nodes that carry a fixed York point.
+// Zeroes `field` on the nodes that carry a fixed York point of m.
 template <int D, class Shape>
-void clamp_membrane_nodes(const std::vector<Membrane<D>>& ms, const Grid<D>& grid,
+void clamp_membrane_nodes(const Membrane<D>& m, const Grid<D>& grid,
                           std::vector<typename Space<D>::Vec>& field, double half_width) {
+  if (m.model != MembraneModel::York) return;
   Stencil<D, Shape> st;
   membrane_detail::YorkStencil<D, Shape> ys;
-  for (const auto& m : ms) {
-    if (m.model != MembraneModel::York) continue;
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      if (!m.fixed[i]) continue;
-      // The nodes around the point, and those its segment reaches.
-      if (st.compute(grid, m.x[i], half_width))
-        for (int k = 0; k < st.count; ++k)
-          if (st.w[k] > 0.0) field[st.node[k]].setZero();
-      if (ys.compute(grid, m, i))
-        for (int k = 0; k < ys.count; ++k)
-          if (ys.w[k] > 0.0) field[ys.node[k]].setZero();
-    }
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (!m.fixed[i]) continue;
+    // The nodes around the point, and those its segment reaches.
+    if (st.compute(grid, m.x[i], half_width))
+      for (int k = 0; k < st.count; ++k)
+        if (st.w[k] > 0.0) field[st.node[k]].setZero();
+    if (ys.compute(grid, m, i))
+      for (int k = 0; k < ys.count; ++k)
+        if (ys.w[k] > 0.0) field[ys.node[k]].setZero();
   }
 }
 
-// Step 3 of the solver for the membranes: the new velocities, the FLIP share
+// Step 3 of the solver for membrane m: the new velocities, the FLIP share
 // `flip` of the increment plus the PIC rest, from grid.velocity and
 // grid.velocity_old.
 template <int D, class Shape>
-void membranes_velocities(std::vector<Membrane<D>>& ms, const Grid<D>& grid, double flip,
-                          double half_width) {
+void membrane_velocities(Membrane<D>& m, const Grid<D>& grid, double flip, double half_width) {
   using Vec = typename Space<D>::Vec;
   Stencil<D, Shape> st;
   membrane_detail::YorkStencil<D, Shape> ys;
-  for (auto& m : ms) {
-    const bool york = m.model == MembraneModel::York;
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      if (m.fixed[i]) {
-        m.v[i].setZero();
-        continue;
-      }
-      Vec dv = Vec::Zero(), v_pic = Vec::Zero();
-      auto add = [&](const auto& s) {  // checked in membranes_to_grid
-        for (int k = 0; k < s.count; ++k) {
-          dv += s.w[k] * (grid.velocity[s.node[k]] - grid.velocity_old[s.node[k]]);
-          v_pic += s.w[k] * grid.velocity[s.node[k]];
-        }
-      };
-      if (york) {
-        ys.compute(grid, m, i);
-        add(ys);
-      } else {
-        st.compute(grid, m.x[i], half_width);
-        add(st);
-      }
-      m.v[i] = flip * (m.v[i] + dv) + (1.0 - flip) * v_pic;
+  const bool york = m.model == MembraneModel::York;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (m.fixed[i]) {
+      m.v[i].setZero();
+      continue;
     }
+    Vec dv = Vec::Zero(), v_pic = Vec::Zero();
+    auto add = [&](const auto& s) {  // checked in membrane_to_grid
+      for (int k = 0; k < s.count; ++k) {
+        dv += s.w[k] * (grid.velocity[s.node[k]] - grid.velocity_old[s.node[k]]);
+        v_pic += s.w[k] * grid.velocity[s.node[k]];
+      }
+    };
+    if (york) {
+      ys.compute(grid, m, i);
+      add(ys);
+    } else {
+      st.compute(grid, m.x[i], half_width);
+      add(st);
+    }
+    m.v[i] = flip * (m.v[i] + dv) + (1.0 - flip) * v_pic;
   }
 }
 
@@ -211,35 +217,39 @@ void membranes_velocities(std::vector<Membrane<D>>& ms, const Grid<D>& grid, dou
 // tests/mpm/test_mpm_membrane_dynamics rang and separated within 0.45 s at
 // flip 0.99, measured.)
 template <int D, class Shape>
-void membranes_move(std::vector<Membrane<D>>& ms, const Grid<D>& grid, double dt,
-                    double half_width) {
+void membrane_move(Membrane<D>& m, const Grid<D>& grid, double dt, double half_width) {
   using Vec = typename Space<D>::Vec;
   Stencil<D, Shape> st;
   membrane_detail::YorkStencil<D, Shape> ys;
-  for (auto& m : ms) {
-    const bool york = m.model == MembraneModel::York;
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      if (m.fixed[i] && !york) continue;
-      Vec v_move = Vec::Zero();
-      if (!york) {
-        st.compute(grid, m.x[i], half_width);
-        for (int k = 0; k < st.count; ++k) v_move += st.w[k] * grid.velocity[st.node[k]];
-        m.x[i] += dt * v_move;
-        continue;
-      }
-      // York: L t = (v(b) - v(a)) / l, all a material line element along t
-      // needs; stored as the rank-one L t (x) t, which maps t to it.
-      ys.compute(grid, m, i);
-      Vec lt = Vec::Zero();
-      for (int k = 0; k < ys.count; ++k) {
-        v_move += ys.w[k] * grid.velocity[ys.node[k]];
-        lt += ys.g[k] * grid.velocity[ys.node[k]];
-      }
-      m.velocity_gradient[i] = lt * m.tangent[i].transpose();
-      if (!m.fixed[i]) m.x[i] += dt * v_move;
+  const bool york = m.model == MembraneModel::York;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (m.fixed[i] && !york) continue;
+    Vec v_move = Vec::Zero();
+    if (!york) {
+      st.compute(grid, m.x[i], half_width);
+      for (int k = 0; k < st.count; ++k) v_move += st.w[k] * grid.velocity[st.node[k]];
+      m.x[i] += dt * v_move;
+      continue;
     }
-    if (york) m.update_york_strain(dt);
+    // York: L t = (v(b) - v(a)) / l, all a material line element along t
+    // needs; stored as the rank-one L t (x) t, which maps t to it.
+    ys.compute(grid, m, i);
+    Vec lt = Vec::Zero();
+    for (int k = 0; k < ys.count; ++k) {
+      v_move += ys.w[k] * grid.velocity[ys.node[k]];
+      lt += ys.g[k] * grid.velocity[ys.node[k]];
+    }
+    m.velocity_gradient[i] = lt * m.tangent[i].transpose();
+    if (!m.fixed[i]) m.x[i] += dt * v_move;
   }
+  if (york) m.update_york_strain(dt);
+}
+
+// membrane_move for every membrane, all on one grid.
+template <int D, class Shape>
+void membranes_move(std::vector<Membrane<D>>& ms, const Grid<D>& grid, double dt,
+                    double half_width) {
+  for (auto& m : ms) membrane_move<D, Shape>(m, grid, dt, half_width);
 }
 
 }  // namespace talus::mpm

@@ -8,6 +8,7 @@
 
 #include "talus/core/error.hpp"
 #include "talus/mpm/apic.hpp"
+#include "talus/mpm/field_contact.hpp"
 #include "talus/mpm/membrane_grid.hpp"
 #include "talus/mpm/nonlocal.hpp"
 #include "talus/mpm/smoothing.hpp"
@@ -73,6 +74,12 @@ void Solver<D>::step(double dt) {
     for (std::size_t i = 0; i < particles.size(); ++i)
       by_material_[particles.material[i]].push_back(static_cast<int>(i));
   }
+  // The membranes' own field, on the grid's nodes and faces.
+  own_field_.assign(membranes.size(), 0);
+  for (std::size_t i = 0; i < membranes.size(); ++i) own_field_[i] = membranes[i].own_field();
+  const bool any = std::find(own_field_.begin(), own_field_.end(), 1) != own_field_.end();
+  if (any && !field_) field_ = MembraneField{grid, grid, {}, {}};
+  if (!any) field_.reset();
   with_shape(params.shape, [&](auto shape) { step_with<decltype(shape)>(dt); });
   time += dt;
   last_dt = dt;
@@ -107,6 +114,8 @@ void Solver<D>::to_grid(bool forces) {
   const Vec g = gravity();
   const double l = params.gimp_half_width;
   const bool apic = params.transfer == Transfer::Apic;
+  const bool offsets = forces && field_;
+  if (offsets) field_->soil_offset.resize(nodes);
   bool outside = false;
   std::int64_t bad = 0;
 #pragma omp parallel
@@ -120,6 +129,7 @@ void Solver<D>::to_grid(bool forces) {
       buf.mass.assign(nodes, 0.0);
       buf.momentum.assign(nodes, Vec::Zero());
       if (forces) buf.force.assign(nodes, Vec::Zero());
+      if (offsets) buf.offset.assign(nodes, Vec::Zero());
       const auto [first, last] = static_block(n, chunks, c);
       for (std::int64_t p = first; p < last; ++p) {
         if (!st.compute(grid, particles.x[p], l)) {
@@ -141,6 +151,7 @@ void Solver<D>::to_grid(bool forces) {
           buf.mass[a] += st.w[k] * m;
           buf.momentum[a] += st.w[k] * (apic ? (mv + mc * st.dx[k]).eval() : mv);
           if (forces) buf.force[a] += st.w[k] * m * g - vol * (sigma * st.grad[k]);
+          if (offsets) buf.offset[a] -= (st.w[k] * m) * st.dx[k];
         }
       }
     }
@@ -158,9 +169,93 @@ void Solver<D>::to_grid(bool forces) {
       grid.mass[a] = m;
       grid.momentum[a] = mv;
       if (forces) grid.force[a] = f;
+      if (offsets) {
+        Vec o = Vec::Zero();
+        for (int t = 0; t < chunks; ++t) o += buffers_[t].offset[a];
+        field_->soil_offset[a] = o;
+      }
     }
   }
   if (outside) left_grid(time, bad);
+}
+
+template <int D>
+Grid<D>& Solver<D>::grid_of(std::size_t membrane) {
+  return own_field_[membrane] ? field_->membranes : grid;
+}
+
+template <int D>
+double Solver<D>::half_width_of(std::size_t membrane) const {
+  return own_field_[membrane] ? 0.0 : params.gimp_half_width;
+}
+
+template <int D>
+template <class Shape>
+void Solver<D>::membranes_to_grids(bool forces) {
+  if (field_) {
+    field_->membranes.clear();
+    if (forces) field_->on_nodes.reset(grid.nodes());
+  }
+  for (std::size_t i = 0; i < membranes.size(); ++i) {
+    const bool own = own_field_[i] && forces;
+    membrane_to_grid<D, Shape>(membranes[i], grid_of(i), gravity(), half_width_of(i), forces, time,
+                               own ? &field_->on_nodes : nullptr);
+  }
+  if (field_) {
+    Grid<D>& g = field_->membranes;
+    g.fold(g.mass, g.momentum, forces ? &g.force : nullptr);
+  }
+}
+
+template <int D>
+template <class Shape>
+void Solver<D>::constrain_and_contact(double dt, double mass_floor) {
+  const std::int64_t nodes = grid.nodes();
+  Grid<D>& walls = field_ ? field_->combined : grid;
+  if (field_) {
+    // The two fields as one body: mass, and the centre-of-mass velocities.
+    const Grid<D>& m = field_->membranes;
+#pragma omp parallel for schedule(static)
+    for (std::int64_t a = 0; a < nodes; ++a) {
+      const double total = grid.mass[a] + m.mass[a];
+      walls.mass[a] = total;
+      const bool empty = total <= mass_floor;
+      walls.velocity[a] =
+          empty ? Vec::Zero().eval()
+                : ((grid.mass[a] * grid.velocity[a] + m.mass[a] * m.velocity[a]) / total).eval();
+      walls.velocity_old[a] =
+          empty ? Vec::Zero().eval()
+                : ((grid.mass[a] * grid.velocity_old[a] + m.mass[a] * m.velocity_old[a]) / total)
+                      .eval();
+    }
+  }
+  if (!rigid_bodies.empty()) {
+    rigid_to_grid<Shape>(dt);
+    rigid_contact(walls, mass_floor);
+  }
+  const double l = params.gimp_half_width;
+  for (const auto& m : membranes) clamp_membrane_nodes<D, Shape>(m, walls, walls.velocity, l);
+  // The updated velocities first: they decide which nodes of a friction face
+  // touch it, and those take the roller's constraint in velocity_old too.
+  const double flip = params.transfer == Transfer::Apic ? 0.0 : params.flip;
+  walls.constrain_velocity(walls.velocity, &walls.velocity_old, flip);
+  walls.constrain(walls.velocity_old);
+  if (!field_) return;
+  MembraneField& f = *field_;
+  split_contact<D>(walls, grid, f.membranes, f.soil_offset, f.on_nodes, flip, mass_floor);
+  walls.constrain(grid.velocity_old);
+  // The soil where it touches the membranes either took v_c (approaching) or
+  // moves away from them, so of a friction face only the roller and fixed
+  // faces apply to it (holding it there would hold a block lifting off a
+  // sheet on the floor down: measured, it stuck). The membranes take the
+  // momentum the soil leaves behind, which may push them toward a wall:
+  // stopped there, without friction (the walls' friction acted on v_c).
+  walls.constrain(grid.velocity, false);
+  if (!rigid_bodies.empty()) rigid_contact(f.membranes, mass_floor, false);
+  f.membranes.constrain_velocity(f.membranes.velocity, nullptr, 0.0, false);
+  f.membranes.constrain(f.membranes.velocity_old);
+  for (std::size_t i = 0; i < membranes.size(); ++i)
+    clamp_membrane_nodes<D, Shape>(membranes[i], grid_of(i), grid_of(i).velocity, l);
 }
 
 template <int D>
@@ -171,48 +266,17 @@ void Solver<D>::step_with(double dt) {
   double mass_floor = 0.0;
   for (double m : particles.mass) mass_floor = std::max(mass_floor, m);
   mass_floor = 1e-12 * std::max(mass_floor, membrane_max_mass(membranes));
-  const double alpha = params.local_damping;
-  // Velocity a node's bed friction can take away in this step.
-  const double bed_dv = params.basal_friction * params.bed_normal_gravity * dt;
 
   // 1. particles -> grid
   to_grid<Shape>(true);
-  membranes_to_grid<D, Shape>(membranes, grid, gravity(), params.gimp_half_width, true, time);
+  membranes_to_grids<Shape>(true);
   grid.fold(grid.mass, grid.momentum, &grid.force);
 
-  // 2. grid momentum update with Cundall's local damping, then the constraints
-#pragma omp parallel for schedule(static)
-  for (std::int64_t a = 0; a < nodes; ++a) {
-    const double m = grid.mass[a];
-    if (m <= mass_floor) {
-      grid.velocity_old[a].setZero();
-      grid.velocity[a].setZero();
-      continue;
-    }
-    const Vec v = grid.momentum[a] / m;
-    Vec f = grid.force[a];
-    if (alpha > 0.0)
-      for (int d = 0; d < D; ++d)
-        f[d] -= alpha * std::abs(f[d]) * (v[d] > 0 ? 1 : v[d] < 0 ? -1 : 0);
-    grid.velocity_old[a] = v;
-    Vec trial = v + dt / m * f;
-    if (bed_dv > 0.0) {
-      // Friction opposes the trial sliding velocity; a node it would reverse sticks.
-      const double speed = trial.norm();
-      trial = speed <= bed_dv ? Vec::Zero().eval() : (trial * (1.0 - bed_dv / speed)).eval();
-    }
-    grid.velocity[a] = trial;
-  }
-  if (!rigid_bodies.empty()) {
-    rigid_to_grid<Shape>(dt);
-    rigid_contact(mass_floor);
-  }
-  clamp_membrane_nodes<D, Shape>(membranes, grid, grid.velocity, params.gimp_half_width);
-  // The updated velocities first: they decide which nodes of a friction face
-  // touch it, and those take the roller's constraint in velocity_old too.
-  grid.constrain_velocity(grid.velocity, &grid.velocity_old,
-                          params.transfer == Transfer::Apic ? 0.0 : params.flip);
-  grid.constrain(grid.velocity_old);
+  // 2. grid momentum update with Cundall's local damping, then the walls and
+  // the contact between the soil and the membranes in their own field
+  update_nodes(grid, dt, mass_floor);
+  if (field_) update_nodes(field_->membranes, dt, mass_floor);
+  constrain_and_contact<Shape>(dt, mass_floor);
 
   // 3. grid -> particles: velocities (and for USL positions and gradients)
   const double flip = params.flip, l = params.gimp_half_width;
@@ -241,20 +305,30 @@ void Solver<D>::step_with(double dt) {
       particles.x[p] += dt * v_pic;
     }
   }
-  membranes_velocities<D, Shape>(membranes, grid, flip, l);
-  if (usl) membranes_move<D, Shape>(membranes, grid, dt, l);
+  for (std::size_t i = 0; i < membranes.size(); ++i) {
+    membrane_velocities<D, Shape>(membranes[i], grid_of(i), flip, half_width_of(i));
+    if (usl) membrane_move<D, Shape>(membranes[i], grid_of(i), dt, half_width_of(i));
+  }
 
   if (!usl) {
     // 4. MUSL: the new particle momenta back to the grid, then the gradient
     to_grid<Shape>(false);
-    membranes_to_grid<D, Shape>(membranes, grid, gravity(), l, false, time);
+    membranes_to_grids<Shape>(false);
     grid.fold(grid.mass, grid.momentum, nullptr);
+    auto remapped = [&](Grid<D>& field) {
 #pragma omp parallel for schedule(static)
-    for (std::int64_t a = 0; a < nodes; ++a)
-      grid.velocity_old[a] =
-          grid.mass[a] > mass_floor ? (grid.momentum[a] / grid.mass[a]).eval() : Vec::Zero();
-    clamp_membrane_nodes<D, Shape>(membranes, grid, grid.velocity_old, l);
-    grid.constrain(grid.velocity_old);
+      for (std::int64_t a = 0; a < nodes; ++a)
+        field.velocity_old[a] =
+            field.mass[a] > mass_floor ? (field.momentum[a] / field.mass[a]).eval() : Vec::Zero();
+    };
+    remapped(grid);
+    if (field_) remapped(field_->membranes);
+    for (std::size_t i = 0; i < membranes.size(); ++i)
+      clamp_membrane_nodes<D, Shape>(membranes[i], grid_of(i), grid_of(i).velocity_old, l);
+    // The walls' contacts of this step (the combined field's, with a membrane field).
+    const Grid<D>& walls = field_ ? field_->combined : grid;
+    walls.constrain(grid.velocity_old);
+    if (field_) walls.constrain(field_->membranes.velocity_old);
 #pragma omp parallel for schedule(static)
     for (std::int64_t p = 0; p < n; ++p) {
       Stencil<D, Shape> st;
@@ -268,7 +342,8 @@ void Solver<D>::step_with(double dt) {
       particles.velocity_gradient[p] = embed(grad_v);
       particles.x[p] += dt * v_move;
     }
-    membranes_move<D, Shape>(membranes, grid, dt, l);
+    for (std::size_t i = 0; i < membranes.size(); ++i)
+      membrane_move<D, Shape>(membranes[i], grid_of(i), dt, half_width_of(i));
   }
 
   // 5. volumes and stresses; the rigid bodies move on exactly
@@ -310,22 +385,53 @@ void Solver<D>::rigid_to_grid(double dt) {
 }
 
 template <int D>
-void Solver<D>::rigid_contact(double mass_floor) {
+void Solver<D>::update_nodes(Grid<D>& field, double dt, double mass_floor) {
+  const std::int64_t nodes = field.nodes();
+  const double alpha = params.local_damping;
+  // Velocity a node's bed friction can take away in this step.
+  const double bed_dv = params.basal_friction * params.bed_normal_gravity * dt;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t a = 0; a < nodes; ++a) {
+    const double m = field.mass[a];
+    if (m <= mass_floor) {
+      field.velocity_old[a].setZero();
+      field.velocity[a].setZero();
+      continue;
+    }
+    const Vec v = field.momentum[a] / m;
+    Vec f = field.force[a];
+    if (alpha > 0.0)
+      for (int d = 0; d < D; ++d)
+        f[d] -= alpha * std::abs(f[d]) * (v[d] > 0 ? 1 : v[d] < 0 ? -1 : 0);
+    field.velocity_old[a] = v;
+    Vec trial = v + dt / m * f;
+    if (bed_dv > 0.0) {
+      // Friction opposes the trial sliding velocity; a node it would reverse sticks.
+      const double speed = trial.norm();
+      trial = speed <= bed_dv ? Vec::Zero().eval() : (trial * (1.0 - bed_dv / speed)).eval();
+    }
+    field.velocity[a] = trial;
+  }
+}
+
+template <int D>
+void Solver<D>::rigid_contact(Grid<D>& field, double mass_floor, bool with_friction) {
   for (std::size_t b = 0; b < rigid_bodies.size(); ++b) {
     RigidBody<D>& body = rigid_bodies[b];
     const RigidNodes<D>& nodes = rigid_nodes_[b];
     double work = 0.0;
     for (const auto a : nodes.touched) {
-      if (grid.mass[a] <= mass_floor) continue;
+      if (field.mass[a] <= mass_floor) continue;
       const Vec vr = nodes.momentum[a] / nodes.weight[a];
       const double g = nodes.normal[a].norm();
-      const Vec before = grid.velocity[a];
+      const Vec before = field.velocity[a];
       // Stick, or no normal (opposite faces cancel): the rigid velocity.
-      if (body.contact == RigidContact::Stick || g == 0.0)
-        grid.velocity[a] = vr;
-      else
-        grid.velocity[a] = friction_contact<Vec>(before, vr, -nodes.normal[a] / g, body.friction);
-      work += grid.mass[a] * (grid.velocity[a] - before).dot(vr);
+      if (with_friction && (body.contact == RigidContact::Stick || g == 0.0))
+        field.velocity[a] = vr;
+      else if (g > 0.0)
+        field.velocity[a] = friction_contact<Vec>(before, vr, -nodes.normal[a] / g,
+                                                  with_friction ? body.friction : 0.0);
+      work += field.mass[a] * (field.velocity[a] - before).dot(vr);
     }
     body.work += work;
   }

@@ -10,8 +10,10 @@
 // into its own node arrays that are then summed in thread order, so results
 // are the same run to run for a given number of threads.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "talus/mpm/field_contact.hpp"
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/materials.hpp"
 #include "talus/mpm/membrane.hpp"
@@ -87,19 +89,45 @@ class Solver {
  private:
   template <class Shape>
   void step_with(double dt);
+  // Mass and momentum (with forces: and forces; with a membrane field: and
+  // the soil's mass-weighted offsets) of the particles on the nodes.
   template <class Shape>
   void to_grid(bool forces);
+  // The membranes on the grid, or on their own field (cleared first).
+  template <class Shape>
+  void membranes_to_grids(bool forces);
+  // The walls (rigid bodies, clamps, faces) on the grid, or with a membrane
+  // field on both fields together, then the contact between them.
+  template <class Shape>
+  void constrain_and_contact(double dt, double mass_floor);
+  // Step 2 on one field: velocities with local damping and bed friction.
+  void update_nodes(Grid<D>& field, double dt, double mass_floor);
+  Grid<D>& grid_of(std::size_t membrane);
+  // GIMP half-width of a membrane's nodes: 0 (the linear hat) in the
+  // membranes' own field, see field_contact.hpp.
+  double half_width_of(std::size_t membrane) const;
   template <class Shape>
   void rigid_to_grid(double dt);
   // The material velocity at the nodes shared with a rigid body, corrected.
-  void rigid_contact(double mass_floor);
+  // with_friction = false: no penetration only (the bodies' friction taken
+  // as 0, stick bodies as friction bodies).
+  void rigid_contact(Grid<D>& field, double mass_floor, bool with_friction = true);
   void update_stresses(double dt);
 
   std::vector<std::vector<int>> by_material_;
   struct NodeBuffer {
     std::vector<double> mass;
-    std::vector<Vec> momentum, force;
+    std::vector<Vec> momentum, force, offset;
   };
+  // The membranes with a soil friction move in one velocity field of their
+  // own; the walls act on the soil's and theirs together (field_contact.hpp).
+  struct MembraneField {
+    Grid<D> membranes, combined;
+    MembraneNodes<D> on_nodes;
+    std::vector<Vec> soil_offset;  // sum N_i m_p (x_p - x_i)
+  };
+  std::optional<MembraneField> field_;
+  std::vector<char> own_field_;                      // per membrane: in field_
   std::vector<NodeBuffer> buffers_;                  // one per chunk
   int chunks_ = 0;                                   // set_chunks
   std::vector<RigidNodes<D>> rigid_nodes_;           // one per rigid body

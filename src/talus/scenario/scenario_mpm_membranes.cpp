@@ -162,6 +162,12 @@ mpm::MembraneParams read_mpm_membrane(TomlReader& r, std::size_t index, const mp
     m.slack_everywhere = false;
   }
   m.velocity = point_or(r, "velocity", ctx, Vec3::Zero());
+  // Absent: the membrane shares the soil's velocity field (no slip).
+  if (r.has("friction")) {
+    if (m.model != mpm::MembraneModel::FiniteElement)
+      r.fail("friction", "a membrane slips on the soil in the FE model only (model = \"fe\")");
+    m.soil_friction = required_number_in(r, "friction", non_negative());
+  }
   r.finish();
   return m;
 }
@@ -197,6 +203,7 @@ nlohmann::ordered_json mpm_membrane_table(const mpm::MembraneParams& m, int dime
   if (!m.slack_everywhere)
     t["slack_box"] = {{"min", point(m.slack_min)}, {"max", point(m.slack_max)}};
   t["velocity"] = point(m.velocity);
+  if (m.soil_friction >= 0.0) t["friction"] = m.soil_friction;
   return t;
 }
 
