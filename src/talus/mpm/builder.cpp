@@ -213,7 +213,11 @@ Solver<D> build_mpm(const MpmScenario& sc) {
       MaterialState s;
       s.cohesion = initial_cohesion(mat);
       if (body.geostatic && g_mag > 0.0) {
-        const double vertical = -mat.density * g_mag * (top - up.dot(x));
+        double vertical = -mat.density * g_mag * (top - up.dot(x));
+        // The skeleton carries the weight less the water's buoyancy below
+        // the level (mpm/water.hpp): (rho - rho_w) g under water.
+        if (const auto& w = sc.solver.water; w.present())
+          vertical += w.density * g_mag * std::max(0.0, std::min(top, w.level) - up.dot(x));
         const Vec3 up3 = Space<D>::to3(up);
         s.stress = k0 * vertical * Mat3::Identity() + (1.0 - k0) * vertical * up3 * up3.transpose();
       }

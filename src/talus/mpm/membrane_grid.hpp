@@ -32,6 +32,7 @@
 #include "talus/mpm/field_contact.hpp"
 #include "talus/mpm/grid.hpp"
 #include "talus/mpm/membrane.hpp"
+#include "talus/mpm/water.hpp"
 
 namespace talus::mpm {
 
@@ -156,6 +157,42 @@ void membranes_to_grid(std::vector<Membrane<D>>& ms, Grid<D>& grid,
                        const typename Space<D>::Vec& gravity, double half_width, bool forces,
                        double time) {
   for (auto& m : ms) membrane_to_grid<D, Shape>(m, grid, gravity, half_width, forces, time);
+}
+
+// The water's drag on membrane m (water.hpp), after the grid update: each
+// submerged node's drag, from the updated grid velocity at the node, changes
+// the velocities of its stencil's nodes by dt N_i F / m_i (the momentum
+// dt F in all, unless a node's normal velocity would reverse: it stops). The grid's field, not the
+// node's own FLIP velocity: a node's FLIP velocity gathers the large changes of the light nodes
+// only the membrane reaches and lags the body it wraps; with it the bag of tests/mpm/test_water.cpp
+// sank 4 % faster than its terminal velocity (measured; with PIC throughout, 1 %).
+template <int D, class Shape>
+void membrane_drag(const Membrane<D>& m, Grid<D>& grid, const WaterParams& water, double dt,
+                   double half_width, double mass_floor) {
+  using Vec = typename Space<D>::Vec;
+  if (m.model != MembraneModel::FiniteElement) return;
+  std::vector<Vec> unit;
+  m.node_normals(unit);
+  Stencil<D, Shape> st;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (!membrane_detail::on_grid(m, i) || !(m.x[i][D - 1] < water.level)) continue;
+    st.compute(grid, m.x[i], half_width);  // checked in membrane_to_grid
+    Vec v = Vec::Zero();
+    for (int k = 0; k < st.count; ++k) v += st.w[k] * grid.velocity[st.node[k]];
+    // The drag lies along n: it changes each node's normal velocity, and never
+    // reverses it (a light node only the membrane reaches could overshoot).
+    const Vec& n = unit[i];
+    const double f = water_drag<D>(water, m, i, v, n).dot(n);
+    if (f == 0.0) continue;
+    for (int k = 0; k < st.count; ++k) {
+      const auto a = st.node[k];
+      if (grid.mass[a] <= mass_floor) continue;
+      const double un = grid.velocity[a].dot(n);
+      double du = dt * st.w[k] / grid.mass[a] * f;
+      if (un * (un + du) < 0.0) du = -un;
+      grid.velocity[a] += du * n;
+    }
+  }
 }
 
 // Zeroes `field` on the nodes that carry a fixed York point of m.

@@ -115,6 +115,9 @@ void Solver<D>::to_grid(bool forces) {
   const double l = params.gimp_half_width;
   const bool apic = params.transfer == Transfer::Apic;
   const bool offsets = forces && field_;
+  // Submerged points: added mass on their inertia, buoyancy on their weight.
+  const WaterParams& water = params.water;
+  const double added_density = water.added_mass_coefficient * water.density;
   if (offsets) field_->soil_offset.resize(nodes);
   bool outside = false;
   std::int64_t bad = 0;
@@ -140,18 +143,22 @@ void Solver<D>::to_grid(bool forces) {
           }
           continue;
         }
-        const double m = particles.mass[p];
-        const Vec mv = m * particles.v[p];
-        const auto sigma = particles.state[p].stress.template topLeftCorner<D, D>().eval();
         const double vol = particles.volume[p];
-        const auto mc = apic ? (m * apic_velocity_gradient<D>(st, particles.affine[p])).eval()
+        const bool wet = particles.x[p][D - 1] < water.level;
+        const double m = particles.mass[p];
+        const double mi = wet ? m + added_density * vol : m;  // inertia
+        const Vec mv = mi * particles.v[p];
+        const auto sigma = particles.state[p].stress.template topLeftCorner<D, D>().eval();
+        const auto mc = apic ? (mi * apic_velocity_gradient<D>(st, particles.affine[p])).eval()
                              : Eigen::Matrix<double, D, D>::Zero().eval();
+        const Vec buoyancy = (-water.density * vol) * g;
         for (int k = 0; k < st.count; ++k) {
           const auto a = st.node[k];
-          buf.mass[a] += st.w[k] * m;
+          buf.mass[a] += st.w[k] * mi;
           buf.momentum[a] += st.w[k] * (apic ? (mv + mc * st.dx[k]).eval() : mv);
           if (forces) buf.force[a] += st.w[k] * m * g - vol * (sigma * st.grad[k]);
-          if (offsets) buf.offset[a] -= (st.w[k] * m) * st.dx[k];
+          if (forces && wet) buf.force[a] += st.w[k] * buoyancy;
+          if (offsets) buf.offset[a] -= (st.w[k] * mi) * st.dx[k];  // over grid.mass
         }
       }
     }
@@ -276,6 +283,10 @@ void Solver<D>::step_with(double dt) {
   // the contact between the soil and the membranes in their own field
   update_nodes(grid, dt, mass_floor);
   if (field_) update_nodes(field_->membranes, dt, mass_floor);
+  if (params.water.present())
+    for (std::size_t i = 0; i < membranes.size(); ++i)
+      membrane_drag<D, Shape>(membranes[i], grid_of(i), params.water, dt, half_width_of(i),
+                              mass_floor);
   constrain_and_contact<Shape>(dt, mass_floor);
 
   // 3. grid -> particles: velocities (and for USL positions and gradients)

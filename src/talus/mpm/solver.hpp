@@ -19,6 +19,7 @@
 #include "talus/mpm/membrane.hpp"
 #include "talus/mpm/particles.hpp"
 #include "talus/mpm/rigid.hpp"
+#include "talus/mpm/water.hpp"
 
 namespace talus::mpm {
 
@@ -44,6 +45,7 @@ struct SolverParams {
   // node's trial velocity and never reversing it. 0 = no bed.
   double basal_friction = 0.0;
   double bed_normal_gravity = 0.0;  // m/s^2, g cos(slope)
+  WaterParams water;
 };
 
 template <int D>

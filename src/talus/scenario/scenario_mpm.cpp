@@ -73,6 +73,14 @@ void read_run(TomlReader& r, mpm::MpmScenario& s, DemContext& ctx) {
     p.bed_normal_gravity = required_number_in(*bed, "normal_gravity", positive());
     bed->finish();
   }
+  if (auto water = r.optional_table("water")) {
+    auto& w = p.water;
+    w.level = water->required_number("level");
+    w.density = number_in(*water, "density", w.density, positive());
+    w.drag_coefficient = required_number_in(*water, "drag_coefficient", non_negative());
+    w.added_mass_coefficient = required_number_in(*water, "added_mass_coefficient", non_negative());
+    water->finish();
+  }
   r.finish();
 }
 
@@ -367,6 +375,11 @@ nlohmann::ordered_json mpm_scenario_to_json(const mpm::MpmScenario& s) {
   if (p.bed_normal_gravity > 0.0)
     run["plan_view"] = {{"basal_friction", p.basal_friction},
                         {"normal_gravity", p.bed_normal_gravity}};
+  if (p.water.present())
+    run["water"] = {{"level", p.water.level},
+                    {"density", p.water.density},
+                    {"drag_coefficient", p.water.drag_coefficient},
+                    {"added_mass_coefficient", p.water.added_mass_coefficient}};
   J faces = J::object();
   for (int f = 0; f < 2 * dim; ++f)
     faces[kFaceKeys[f]] = s.grid.faces[f] == BoundaryKind::Friction
