@@ -131,11 +131,9 @@ void check_membranes_resume(const MpmScenario& sc, int steps, const std::string&
   }
 }
 
-// The block of the test above falls into an FE bag (closed, cables) that
-// hangs on nothing, onto a York line held at both ends.
-TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
-  auto sc = block_on_turning_plate();
-  sc.rigid_bodies.clear();
+// An FE bag (closed, cables) around the block of the test above, falling at
+// 1 m/s.
+MembraneParams falling_bag() {
   MembraneParams bag;
   bag.name = "bag";
   bag.points = {Vec3(0.145, 0.115, 0.0), Vec3(0.255, 0.115, 0.0), Vec3(0.255, 0.175, 0.0),
@@ -145,6 +143,15 @@ TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
   bag.stiffness = 2e4;
   bag.areal_mass = 0.5;
   bag.velocity = Vec3(0.0, -1.0, 0.0);
+  return bag;
+}
+
+// The block falls in the bag, which hangs on nothing, onto a York line held
+// at both ends.
+TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
+  auto sc = block_on_turning_plate();
+  sc.rigid_bodies.clear();
+  MembraneParams bag = falling_bag();
   MembraneParams line = bag;
   line.name = "line";
   line.model = MembraneModel::York;
@@ -163,15 +170,7 @@ TEST(MpmCheckpoint, RunWithMembranesResumesBitForBit) {
 TEST(MpmCheckpoint, RunWithSlippingMembraneResumesBitForBit) {
   auto sc = block_on_turning_plate();
   sc.rigid_bodies.clear();
-  MembraneParams bag;
-  bag.name = "bag";
-  bag.points = {Vec3(0.145, 0.115, 0.0), Vec3(0.255, 0.115, 0.0), Vec3(0.255, 0.175, 0.0),
-                Vec3(0.145, 0.175, 0.0)};
-  bag.closed = true;
-  bag.spacing = 0.005;
-  bag.stiffness = 2e4;
-  bag.areal_mass = 0.5;
-  bag.velocity = Vec3(0.0, -1.0, 0.0);
+  MembraneParams bag = falling_bag();
   MembraneParams line = bag;
   line.name = "line";
   line.points = {Vec3(0.03, 0.11, 0.0), Vec3(0.37, 0.11, 0.0)};

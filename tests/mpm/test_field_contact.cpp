@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <random>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/field_contact.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/scenario.hpp"
@@ -20,12 +21,6 @@ namespace talus::mpm {
 namespace {
 
 using V2 = Eigen::Vector2d;
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 TEST(MpmFieldContact, NodeRuleKeepsMomentumAndCoulomb) {
   std::mt19937 rng(7);
@@ -88,13 +83,7 @@ Solver<2> block_on_sheet(double theta, double friction) {
   // of mu = 0): a roller would hold the soil's bottom nodes both ways.
   sc.grid.faces[2] = BoundaryKind::Friction;
   sc.grid.friction[2] = 0.0;
-  MaterialParams m;
-  m.name = "block";
-  m.model = LinearElastic::name;
-  m.density = 1000.0;
-  m.youngs_modulus = 2.5e5;
-  m.poisson_ratio = 0.3;
-  sc.materials = {m};
+  sc.materials = {elastic_material("block", 1000.0, 2.5e5, 0.3)};
   BodyParams block;
   block.material = "block";
   block.min = Vec3(0.04, 0.0, 0.0);
@@ -115,22 +104,7 @@ Solver<2> block_on_sheet(double theta, double friction) {
   return s;
 }
 
-double centre_x(const Solver<2>& s) {
-  double mx = 0.0, m = 0.0;
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    mx += s.particles.mass[i] * s.particles.x[i][0];
-    m += s.particles.mass[i];
-  }
-  return mx / m;
-}
-
-// Least-squares slope of the block's velocity over time.
-struct Fit {
-  double st = 0, sv = 0, stt = 0, stv = 0;
-  int n = 0;
-  void add(double t, double v) { st += t, sv += v, stt += t * t, stv += t * v, ++n; }
-  double slope() const { return (n * stv - st * sv) / (n * stt - st * st); }
-};
+double centre_x(const Solver<2>& s) { return centre_of_mass(s.particles, 0); }
 
 // 3D: the block 0.12 x 0.12 x 0.06 m on a sheet of triangles held by its
 // edges, h = 20 mm, gravity turned by theta toward +x.
@@ -144,13 +118,7 @@ Solver<3> block_on_sheet_3d(double theta) {
   sc.grid.faces.fill(BoundaryKind::Free);
   sc.grid.faces[4] = BoundaryKind::Friction;
   sc.grid.friction[4] = 0.0;
-  MaterialParams m;
-  m.name = "block";
-  m.model = LinearElastic::name;
-  m.density = 1000.0;
-  m.youngs_modulus = 2.5e5;
-  m.poisson_ratio = 0.3;
-  sc.materials = {m};
+  sc.materials = {elastic_material("block", 1000.0, 2.5e5, 0.3)};
   BodyParams block;
   block.material = "block";
   block.min = Vec3(0.04, 0.04, 0.0);
@@ -249,13 +217,7 @@ TEST(MpmFieldContact, BlockOnAFreeSheetKeepsTotalMomentum) {
   sc.grid.hi = Vec3(0.3, 0.15, 0.0);
   sc.grid.cell_size = 0.01;
   sc.grid.faces.fill(BoundaryKind::Free);
-  MaterialParams m;
-  m.name = "block";
-  m.model = LinearElastic::name;
-  m.density = 1000.0;
-  m.youngs_modulus = 2.5e5;
-  m.poisson_ratio = 0.3;
-  sc.materials = {m};
+  sc.materials = {elastic_material("block", 1000.0, 2.5e5, 0.3)};
   BodyParams block;
   block.material = "block";
   block.min = Vec3(0.09, 0.055, 0.0);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "mpm_test_support.hpp"
 #include "talus/core/error.hpp"
 #include "talus/mpm/flume.hpp"
 #include "talus/mpm/scenario.hpp"
@@ -14,12 +15,6 @@
 
 namespace talus::mpm {
 namespace {
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 // An elastic block 0.1 x 0.05 m (rho 1000, E 250 kPa, nu 0.3; h = 10 mm, 2x2
 // points per cell, GIMP) resting on a straight path_wall inclined at the

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/scenario.hpp"
 
@@ -18,13 +19,6 @@ namespace talus::mpm {
 namespace {
 
 using V2 = Eigen::Vector2d;
-
-// A few hundred to a few thousand points: threads only cost here.
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 TEST(MpmFrictionFace, CoulombRuleOnTheFaceNodes) {
   // One cell of 1 m; the floor (y_min) has mu = 0.5, x_min is a roller.
@@ -78,13 +72,7 @@ MpmScenario block_on_floor(double h, double mu, double v0,
   sc.grid.faces.fill(BoundaryKind::Free);
   sc.grid.faces[2 * up] = floor;
   sc.grid.friction[2 * up] = mu;
-  MaterialParams m;
-  m.name = "block";
-  m.model = LinearElastic::name;
-  m.density = 1000.0;
-  m.youngs_modulus = 2.5e5;
-  m.poisson_ratio = 0.3;
-  sc.materials = {m};
+  sc.materials = {elastic_material("block", 1000.0, 2.5e5, 0.3)};
   BodyParams block;
   block.material = "block";
   block.min = D == 2 ? Vec3(0.04, 0.0, 0.0) : Vec3(0.04, 0.04, 0.0);
@@ -97,22 +85,8 @@ MpmScenario block_on_floor(double h, double mu, double v0,
 
 template <int D>
 double centre_x(const Solver<D>& s) {
-  double mx = 0.0, m = 0.0;
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    mx += s.particles.mass[i] * s.particles.x[i][0];
-    m += s.particles.mass[i];
-  }
-  return mx / m;
+  return centre_of_mass(s.particles, 0);
 }
-
-// Least-squares slope of the centre of mass's x velocity over [t0, t1],
-// sampled every step.
-struct Fit {
-  double st = 0, sv = 0, stt = 0, stv = 0;
-  int n = 0;
-  void add(double t, double v) { st += t, sv += v, stt += t * t, stv += t * v, ++n; }
-  double slope() const { return (n * stv - st * sv) / (n * stt - st * st); }
-};
 
 struct Slide {
   double deceleration;  // fitted, m/s^2

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
@@ -18,12 +19,6 @@ using V2 = Eigen::Vector2d;
 constexpr double kJ = 1000.0;   // N/m
 constexpr double kMass = 10.0;  // kg per m of depth
 constexpr double kL0 = 1.0, kG = 10.0;
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 // A one-cell block of 2 x 2 points (the mass) centred at p, stiff against the
 // membrane (E b / b = 1e6 N/m against J / l0 = 1e3 N/m).

@@ -9,16 +9,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
 namespace {
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 // Strip: J = 5000 N/m, w = 0.2 m, l0 = 1 m (spring stiffness 1000 N/m),
 // mu = 0.5 kg/m^2 (0.1 kg); block 10 kg, g = 10 m/s^2; cells h = 0.05 m.

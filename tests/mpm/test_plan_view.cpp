@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
@@ -57,12 +58,6 @@ V2 centre(const Solver<2>& s) {
   }
   return c / m;
 }
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 // Below the friction angle (tan 20 deg = 0.36 < 0.4) a block at rest stays:
 // the node's trial velocity g sin(theta) dt is below mu g cos(theta) dt. The

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/scenario.hpp"
 
@@ -106,11 +107,6 @@ MpmScenario tilting_plate(double omega, double stop) {
 }
 
 // A few hundred points: threads only cost here (and on a loaded machine a lot).
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 struct Sliding {
   double angle;     // of the plate, rad

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <map>
 
+#include "mpm_test_support.hpp"
 #include "talus/mpm/scenario.hpp"
 
 namespace talus::mpm {
@@ -15,12 +16,6 @@ namespace {
 
 using V2 = Eigen::Vector2d;
 using M2 = Eigen::Matrix2d;
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 MaterialParams elastic(double e, double nu, double rho) {
   MaterialParams m;

@@ -13,18 +13,13 @@
 #include <cstdio>
 
 #include "mpm_scenario_cases.hpp"
+#include "mpm_test_support.hpp"
 #include "talus/mpm/health.hpp"
 #include "talus/mpm/scenario.hpp"
 #include "talus/scenario/scenario_mpm.hpp"
 
 namespace talus::mpm {
 namespace {
-
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
-};
 
 constexpr double kG = 9.81;
 
@@ -42,13 +37,7 @@ MpmScenario block_in_water(double density, double level, double added_mass) {
   sc.grid.hi = Vec3(0.4, 2.6, 0.0);
   sc.grid.cell_size = 0.02;
   sc.grid.faces.fill(BoundaryKind::Free);
-  MaterialParams m;
-  m.name = "block";
-  m.model = LinearElastic::name;
-  m.density = density;
-  m.youngs_modulus = 1e6;
-  m.poisson_ratio = 0.3;
-  sc.materials = {m};
+  sc.materials = {elastic_material("block", density, 1e6, 0.3)};
   BodyParams block;
   block.material = "block";
   block.min = Vec3(0.1, 2.3, 0.0);
