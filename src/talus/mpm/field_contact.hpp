@@ -14,9 +14,10 @@
 // first: a membrane is light, and a sheet lying on a floor under a block
 // passes the floor's reaction to the block. Taken the other way round (the
 // contact on the fields' own velocities, then the floor on each), v_c moves
-// with the heavy block, the block hardly approaches it, friction has nothing
-// to act on, and the floor holds the block by itself, frictionless (measured:
-// the block of tests/mpm/test_field_contact.cpp slid at g sin(theta)).
+// with the heavy block, the block hardly approaches it, friction has little
+// to act on, and the floor holds the block by itself, frictionless. (The
+// first version did that and its block slid at g sin(theta), but it also had
+// the normal's sign wrong; the order is chosen by this reasoning.)
 //
 // The normal: its direction is the membranes' own (their nodes' normals mapped
 // with their mass, as a rigid body's are: normals from mass gradients scatter
@@ -24,9 +25,9 @@
 // normal turns sliding into spurious approach that friction brakes, see
 // rigid.hpp). Its sign says where the membrane lies from the soil: the
 // membranes' mass centre seen from the node minus the soil's. (The soil's
-// mass gradient alone, sum m_p grad N_i, points the wrong way one cell inside
-// the soil, where a sheet under a block still reaches: measured, the block
-// stuck at every slope.) Where the membranes' normals cancel (a fold a cell
+// mass gradient alone, sum m_p grad N_i, has no reliable direction a cell
+// inside the soil, where a sheet under a block may still reach: its sign was
+// seen to flip there.) Where the membranes' normals cancel (a fold a cell
 // wide) that difference of mass centres gives the direction as well. All
 // membranes with a friction share one field: two bags in contact do not slip
 // on each other.
