@@ -75,9 +75,8 @@ void Solver<D>::step(double dt) {
       by_material_[particles.material[i]].push_back(static_cast<int>(i));
   }
   // The membranes' own field, on the grid's nodes and faces.
-  own_field_.assign(membranes.size(), 0);
-  for (std::size_t i = 0; i < membranes.size(); ++i) own_field_[i] = membranes[i].own_field();
-  const bool any = std::find(own_field_.begin(), own_field_.end(), 1) != own_field_.end();
+  const bool any = std::any_of(membranes.begin(), membranes.end(),
+                               [](const Membrane<D>& m) { return m.own_field(); });
   if (any && !field_) field_ = MembraneField{grid, grid, {}, {}};
   if (!any) field_.reset();
   with_shape(params.shape, [&](auto shape) { step_with<decltype(shape)>(dt); });
@@ -188,12 +187,12 @@ void Solver<D>::to_grid(bool forces) {
 
 template <int D>
 Grid<D>& Solver<D>::grid_of(std::size_t membrane) {
-  return own_field_[membrane] ? field_->membranes : grid;
+  return membranes[membrane].own_field() ? field_->membranes : grid;
 }
 
 template <int D>
 double Solver<D>::half_width_of(std::size_t membrane) const {
-  return own_field_[membrane] ? 0.0 : params.gimp_half_width;
+  return membranes[membrane].own_field() ? 0.0 : params.gimp_half_width;
 }
 
 template <int D>
@@ -204,7 +203,7 @@ void Solver<D>::membranes_to_grids(bool forces) {
     if (forces) field_->on_nodes.reset(grid.nodes());
   }
   for (std::size_t i = 0; i < membranes.size(); ++i) {
-    const bool own = own_field_[i] && forces;
+    const bool own = membranes[i].own_field() && forces;
     membrane_to_grid<D, Shape>(membranes[i], grid_of(i), gravity(), half_width_of(i), forces, time,
                                own ? &field_->on_nodes : nullptr);
   }
@@ -254,11 +253,11 @@ void Solver<D>::constrain_and_contact(double dt, double mass_floor) {
   // The soil where it touches the membranes either took v_c (approaching) or
   // moves away from them, so of a friction face only the roller and fixed
   // faces apply to it: a friction face holds only what presses on it, and
-  // the soil that leaves the sheet is not pressing. (The tests' block slides
-  // at the same rate either way: 1.8430 here, 1.8448 m/s^2 held both ways,
-  // measured.) The membranes take the
-  // momentum the soil leaves behind, which may push them toward a wall:
-  // stopped there, without friction (the walls' friction acted on v_c).
+  // soil leaving the sheet is not pressing. (The tests' block slides at the
+  // same rate either way: 1.8430 here, 1.8448 m/s^2 held both ways,
+  // measured.) The membranes take the momentum the soil leaves behind, which
+  // may push them toward a wall: stopped there, without friction (the walls'
+  // friction acted on v_c).
   walls.constrain(grid.velocity, false);
   if (!rigid_bodies.empty()) rigid_contact(f.membranes, mass_floor, false);
   f.membranes.constrain_velocity(f.membranes.velocity, nullptr, 0.0, false);

@@ -132,7 +132,6 @@ class Solver {
     std::vector<Vec> soil_offset;  // sum N_i m_p (x_p - x_i)
   };
   std::optional<MembraneField> field_;
-  std::vector<char> own_field_;                      // per membrane: in field_
   std::vector<NodeBuffer> buffers_;                  // one per chunk
   int chunks_ = 0;                                   // set_chunks
   std::vector<RigidNodes<D>> rigid_nodes_;           // one per rigid body
