@@ -1,0 +1,285 @@
+#include "talus/hybrid/solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "talus/core/error.hpp"
+
+namespace talus::hybrid {
+
+namespace {
+
+// Interpolates a per-cell field bilinearly between cell centres (clamped at
+// the outer half cells).
+double bilinear(const runout::GridShape& g, const std::vector<double>& f, double x, double y) {
+  const double fx = std::clamp(x / g.dx - 0.5, 0.0, static_cast<double>(g.nx - 1));
+  const double fy = std::clamp(y / g.dy - 0.5, 0.0, static_cast<double>(g.ny - 1));
+  const std::size_t i = std::min(static_cast<std::size_t>(fx), g.nx > 1 ? g.nx - 2 : 0);
+  const std::size_t j = std::min(static_cast<std::size_t>(fy), g.ny > 1 ? g.ny - 2 : 0);
+  const double tx = g.nx > 1 ? fx - static_cast<double>(i) : 0.0;
+  const double ty = g.ny > 1 ? fy - static_cast<double>(j) : 0.0;
+  const std::size_t i1 = g.nx > 1 ? i + 1 : i, j1 = g.ny > 1 ? j + 1 : j;
+  return (1 - ty) * ((1 - tx) * f[g.index(i, j)] + tx * f[g.index(i1, j)]) +
+         ty * ((1 - tx) * f[g.index(i, j1)] + tx * f[g.index(i1, j1)]);
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw InputError("hybrid: " + what);
+}
+
+}  // namespace
+
+HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particles particles,
+                           double particle_spacing)
+    : terrain_(std::move(terrain)),
+      params_(std::move(params)),
+      p_(std::move(particles)),
+      kernel_(params_.smoothing_length > 0.0 ? params_.smoothing_length : 1.0),
+      material_(mpm::DruckerPrager::make(params_.material)) {
+  const HybridParams& q = params_;
+  require(q.smoothing_length > 0.0 && std::isfinite(q.smoothing_length),
+          "smoothing_length must be > 0");
+  require(
+      q.material.model == mpm::DruckerPrager::name,
+      fmt::format("the structured material must be drucker_prager, not '{}'", q.material.model));
+  require(q.material.density > 0.0, "the material's density must be > 0");
+  require(q.tan_basal_friction >= 0.0, "the basal friction must be >= 0");
+  require(q.viscosity_alpha >= 0.0 && q.viscosity_beta >= 0.0,
+          "the artificial viscosity's alpha and beta must be >= 0");
+  require(q.artificial_stress >= 0.0 && q.artificial_stress_exponent > 0,
+          "the artificial stress needs eps >= 0 and an exponent > 0");
+  require(q.courant > 0.0 && q.courant <= 1.0, "courant must be in (0, 1]");
+  require(particle_spacing > 0.0, "the particle spacing must be > 0");
+  require(!terrain_.has_outside(), "terrains with no-data cells are not supported yet");
+  const auto& g = terrain_.shape();
+  const double width = static_cast<double>(g.nx) * g.dx, height = static_cast<double>(g.ny) * g.dy;
+  for (std::size_t k = 0; k < p_.size(); ++k) {
+    require(p_.x[k] >= 0.0 && p_.x[k] <= width && p_.y[k] >= 0.0 && p_.y[k] <= height,
+            fmt::format("particle {} at ({}, {}) is outside the terrain", k, p_.x[k], p_.y[k]));
+    require(p_.mass[k] > 0.0, fmt::format("particle {} has no mass", k));
+  }
+  rho_c_ = q.material.density;
+  c0_ = q.material.cohesion;
+  eps_c_ = q.material.critical_volume_strain;
+  const double s = std::sin(q.material.friction_angle);
+  k_active_ = (1.0 - s) / (1.0 + s);  // Rankine (eq. 42)
+  sqrt_k_active_ = std::sqrt(k_active_);
+  w_d0_ = kernel_.value(particle_spacing);
+  sound_speed_ = material_.wave_speed();
+  for (auto& st : p_.state) st.cohesion = c0_;
+  const std::size_t n = p_.size();
+  for (auto* a : {&sxx_, &sxy_, &syy_, &rxx_, &rxy_, &ryy_, &ax_, &ay_}) a->assign(n, 0.0);
+}
+
+HybridSolver::Bed HybridSolver::bed_at(double x, double y) const {
+  const auto& g = terrain_.shape();
+  const double bx = bilinear(g, terrain_.slope_x(), x, y);
+  const double by = bilinear(g, terrain_.slope_y(), x, y);
+  const double cos2 = 1.0 / (1.0 + bx * bx + by * by);
+  const double gn = params_.gravity * cos2;
+  return {-gn * bx, -gn * by, gn};
+}
+
+double HybridSolver::lateral_force(double depth, double cohesion, double normal_gravity) const {
+  if (!params_.earth_pressure || depth <= 0.0) return 0.0;
+  const double gamma = rho_c_ * normal_gravity;
+  // The active pressure K gamma z - 2 c sqrt(K) is zero down to z0 (Bell's
+  // tension zone, which carries nothing), then grows linearly.
+  const double z0 = 2.0 * cohesion * sqrt_k_active_ / (k_active_ * gamma);
+  if (z0 >= depth) return 0.0;
+  const double d = depth - z0;
+  return 0.5 * k_active_ * gamma * d * d;
+}
+
+double HybridSolver::stable_time_step() const {
+  double vmax = 0.0;
+  for (std::size_t k = 0; k < p_.size(); ++k) vmax = std::max(vmax, std::hypot(p_.u[k], p_.v[k]));
+  return params_.courant * params_.smoothing_length / (sound_speed_ + vmax);
+}
+
+void HybridSolver::densities() {
+  const auto n = static_cast<long>(p_.size());
+  const double r2max = kernel_.support() * kernel_.support();
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double xi = p_.x[i], yi = p_.y[i];
+    double sum = 0.0;
+    grid_.for_near(xi, yi, [&](int j) {
+      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 < r2max) sum += p_.mass[j] * kernel_.value(std::sqrt(r2));
+    });
+    p_.areal[i] = sum;
+    p_.depth[i] = sum / rho_c_;
+  }
+}
+
+void HybridSolver::stresses(double dt) {
+  const auto n = static_cast<long>(p_.size());
+  const double r2max = kernel_.support() * kernel_.support();
+  const double eps = params_.artificial_stress;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double xi = p_.x[i], yi = p_.y[i], ui = p_.u[i], vi = p_.v[i];
+    mpm::Mat3 l = mpm::Mat3::Zero();
+    grid_.for_near(xi, yi, [&](int j) {
+      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= r2max || j == i) return;
+      const double w = p_.mass[j] * kernel_.derivative_over_r(std::sqrt(r2));
+      const double du = p_.u[j] - ui, dv = p_.v[j] - vi;
+      l(0, 0) += w * du * dx;
+      l(0, 1) += w * du * dy;
+      l(1, 0) += w * dv * dx;
+      l(1, 1) += w * dv * dy;
+    });
+    l /= p_.areal[i];
+    const double dilation = l(0, 0) + l(1, 1);
+    p_.dilation[i] = dilation;
+    mpm::MaterialState& st = p_.state[i];
+    material_.update(st, l, dt, dilation * dt);
+    const Bed bed = bed_at(xi, yi);
+    const double h = p_.depth[i];
+    const double pressure = lateral_force(h, st.cohesion, bed.normal_gravity);
+    const double inv_rho2 = 1.0 / (p_.areal[i] * p_.areal[i]);
+    const double sxx = (h * st.stress(0, 0) - pressure) * inv_rho2;
+    const double sxy = h * st.stress(0, 1) * inv_rho2;
+    const double syy = (h * st.stress(1, 1) - pressure) * inv_rho2;
+    sxx_[i] = sxx;
+    sxy_[i] = sxy;
+    syy_[i] = syy;
+    // Artificial stress: in S's principal axes, -eps times each tensile
+    // principal value (Gray et al. 2001), rotated back.
+    double rxx = 0.0, rxy = 0.0, ryy = 0.0;
+    if (eps > 0.0) {
+      const double mean = 0.5 * (sxx + syy), half = 0.5 * (sxx - syy);
+      const double radius = std::hypot(half, sxy);
+      const double s1 = mean + radius, s2 = mean - radius;
+      const double r1 = s1 > 0.0 ? -eps * s1 : 0.0, r2 = s2 > 0.0 ? -eps * s2 : 0.0;
+      // Unit vector of s1: angle theta with tan(2 theta) = 2 sxy / (sxx - syy).
+      const double theta = 0.5 * std::atan2(sxy, half);
+      const double c = std::cos(theta), s = std::sin(theta);
+      rxx = r1 * c * c + r2 * s * s;
+      ryy = r1 * s * s + r2 * c * c;
+      rxy = (r1 - r2) * c * s;
+    }
+    rxx_[i] = rxx;
+    rxy_[i] = rxy;
+    ryy_[i] = ryy;
+  }
+}
+
+void HybridSolver::accelerations() {
+  const auto n = static_cast<long>(p_.size());
+  const double r2max = kernel_.support() * kernel_.support();
+  const double l = params_.smoothing_length;
+  const int exponent = params_.artificial_stress_exponent;
+  const double alpha = params_.viscosity_alpha, beta = params_.viscosity_beta;
+  const bool artificial = params_.artificial_stress > 0.0;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double xi = p_.x[i], yi = p_.y[i], ui = p_.u[i], vi = p_.v[i];
+    double axi = 0.0, ayi = 0.0;
+    grid_.for_near(xi, yi, [&](int j) {
+      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= r2max || j == i) return;
+      const double r = std::sqrt(r2);
+      double txx = sxx_[i] + sxx_[j], txy = sxy_[i] + sxy_[j], tyy = syy_[i] + syy_[j];
+      if (artificial) {
+        const double ratio = kernel_.value(r) / w_d0_;
+        double f = ratio;
+        for (int e = 1; e < exponent; ++e) f *= ratio;
+        txx += f * (rxx_[i] + rxx_[j]);
+        txy += f * (rxy_[i] + rxy_[j]);
+        tyy += f * (ryy_[i] + ryy_[j]);
+      }
+      const double approach = (ui - p_.u[j]) * dx + (vi - p_.v[j]) * dy;
+      if (approach < 0.0) {
+        const double mu = l * approach / (r2 + 0.01 * l * l);
+        const double pi =
+            (-alpha * sound_speed_ * mu + beta * mu * mu) / (0.5 * (p_.areal[i] + p_.areal[j]));
+        txx -= pi;
+        tyy -= pi;
+      }
+      const double w = p_.mass[j] * kernel_.derivative_over_r(r);
+      axi += w * (txx * dx + txy * dy);
+      ayi += w * (txy * dx + tyy * dy);
+    });
+    ax_[i] = axi;
+    ay_[i] = ayi;
+  }
+}
+
+void HybridSolver::integrate(double dt) {
+  const auto n = static_cast<long>(p_.size());
+  const auto& g = terrain_.shape();
+  const double width = static_cast<double>(g.nx) * g.dx, height = static_cast<double>(g.ny) * g.dy;
+  const double mu = params_.tan_basal_friction;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const Bed bed = bed_at(p_.x[i], p_.y[i]);
+    double u = p_.u[i] + dt * (ax_[i] + bed.gx), v = p_.v[i] + dt * (ay_[i] + bed.gy);
+    // Basal Coulomb friction as an impulse: it stops the particle, never
+    // reverses it.
+    const double speed = std::hypot(u, v), stop = dt * mu * bed.normal_gravity;
+    if (speed <= stop) {
+      u = v = 0.0;
+    } else if (stop > 0.0) {
+      const double scale = 1.0 - stop / speed;
+      u *= scale;
+      v *= scale;
+    }
+    double x = p_.x[i] + dt * u, y = p_.y[i] + dt * v;
+    // Walls at the terrain's edges: the normal velocity is removed.
+    if (x < 0.0 || x > width) {
+      x = std::clamp(x, 0.0, width);
+      u = 0.0;
+    }
+    if (y < 0.0 || y > height) {
+      y = std::clamp(y, 0.0, height);
+      v = 0.0;
+    }
+    p_.u[i] = u;
+    p_.v[i] = v;
+    p_.x[i] = x;
+    p_.y[i] = y;
+  }
+  for (long i = 0; i < n; ++i)
+    if (!std::isfinite(p_.u[i]) || !std::isfinite(p_.v[i]))
+      throw RunError(fmt::format(
+          "hybrid: particle {}'s velocity is not finite at t = {:.6g} s (near x = {:.4g}, y = "
+          "{:.4g}); the step {:.3g} s may be too long for the material's stiffness",
+          i, time_, p_.x[i], p_.y[i], dt));
+}
+
+void HybridSolver::step(double dt) {
+  grid_.build(p_.x, p_.y, kernel_.support());
+  densities();
+  stresses(dt);
+  accelerations();
+  integrate(dt);
+  time_ += dt;
+}
+
+HybridTotals HybridSolver::totals() const {
+  HybridTotals t;
+  for (std::size_t k = 0; k < p_.size(); ++k) {
+    const double m = p_.mass[k], s2 = p_.u[k] * p_.u[k] + p_.v[k] * p_.v[k];
+    t.mass += m;
+    t.momentum_x += m * p_.u[k];
+    t.momentum_y += m * p_.v[k];
+    t.kinetic_energy += 0.5 * m * s2;
+    t.max_speed = std::max(t.max_speed, std::sqrt(s2));
+  }
+  return t;
+}
+
+double HybridSolver::strength_fraction(std::size_t k) const {
+  return c0_ > 0.0 ? p_.state[k].cohesion / c0_ : 1.0;
+}
+
+}  // namespace talus::hybrid
