@@ -12,9 +12,20 @@ namespace talus::hybrid {
 
 namespace {
 
+// The cell holding (x, y), clamped to the grid.
+std::size_t cell_at(const runout::GridShape& g, double x, double y) {
+  const auto i =
+      static_cast<std::size_t>(std::clamp(x / g.dx, 0.0, static_cast<double>(g.nx) - 0.5));
+  const auto j =
+      static_cast<std::size_t>(std::clamp(y / g.dy, 0.0, static_cast<double>(g.ny) - 0.5));
+  return g.index(i, j);
+}
+
 // Interpolates a per-cell field bilinearly between cell centres (clamped at
-// the outer half cells).
-double bilinear(const runout::GridShape& g, const std::vector<double>& f, double x, double y) {
+// the outer half cells); next to a cell outside the domain (whose slope is
+// not the ground's) it takes the value of the cell holding the point.
+double bilinear(const runout::Terrain& terrain, const std::vector<double>& f, double x, double y) {
+  const runout::GridShape& g = terrain.shape();
   const double fx = std::clamp(x / g.dx - 0.5, 0.0, static_cast<double>(g.nx - 1));
   const double fy = std::clamp(y / g.dy - 0.5, 0.0, static_cast<double>(g.ny - 1));
   const std::size_t i = std::min(static_cast<std::size_t>(fx), g.nx > 1 ? g.nx - 2 : 0);
@@ -22,8 +33,19 @@ double bilinear(const runout::GridShape& g, const std::vector<double>& f, double
   const double tx = g.nx > 1 ? fx - static_cast<double>(i) : 0.0;
   const double ty = g.ny > 1 ? fy - static_cast<double>(j) : 0.0;
   const std::size_t i1 = g.nx > 1 ? i + 1 : i, j1 = g.ny > 1 ? j + 1 : j;
-  return (1 - ty) * ((1 - tx) * f[g.index(i, j)] + tx * f[g.index(i1, j)]) +
-         ty * ((1 - tx) * f[g.index(i, j1)] + tx * f[g.index(i1, j1)]);
+  const auto& in = terrain.inside();
+  const std::size_t c00 = g.index(i, j), c10 = g.index(i1, j), c01 = g.index(i, j1),
+                    c11 = g.index(i1, j1);
+  if (!in[c00] || !in[c10] || !in[c01] || !in[c11]) return f[cell_at(g, x, y)];
+  return (1 - ty) * ((1 - tx) * f[c00] + tx * f[c10]) + ty * ((1 - tx) * f[c01] + tx * f[c11]);
+}
+
+// The Drucker-Prager model with its critical volume strain for this kernel
+// (the crack-band form scales with the smoothing length as MPM's with the cell).
+mpm::DruckerPrager make_material(mpm::MaterialParams m, double smoothing_length) {
+  if (smoothing_length > 0.0)
+    m.critical_volume_strain = mpm::critical_volume_strain(m, smoothing_length);
+  return mpm::DruckerPrager::make(m);
 }
 
 void require(bool ok, const std::string& what) {
@@ -38,7 +60,8 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
       params_(std::move(params)),
       p_(std::move(particles)),
       kernel_(params_.smoothing_length > 0.0 ? params_.smoothing_length : 1.0),
-      material_(mpm::DruckerPrager::make(params_.material)) {
+      material_(make_material(params_.material, params_.smoothing_length)),
+      nonlocal_(params_.material.nonlocal_length) {
   const HybridParams& q = params_;
   require(q.smoothing_length > 0.0 && std::isfinite(q.smoothing_length),
           "smoothing_length must be > 0");
@@ -46,6 +69,8 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
       q.material.model == mpm::DruckerPrager::name,
       fmt::format("the structured material must be drucker_prager, not '{}'", q.material.model));
   require(q.material.density > 0.0, "the material's density must be > 0");
+  if (const auto problem = mpm::DruckerPrager::check(q.material))
+    throw InputError(fmt::format("hybrid: material key '{}': {}", problem.key, problem.message));
   require(q.tan_basal_friction >= 0.0, "the basal friction must be >= 0");
   require(q.viscosity_alpha >= 0.0 && q.viscosity_beta >= 0.0,
           "the artificial viscosity's alpha and beta must be >= 0");
@@ -53,12 +78,14 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
           "the artificial stress needs eps >= 0 and an exponent > 0");
   require(q.courant > 0.0 && q.courant <= 1.0, "courant must be in (0, 1]");
   require(particle_spacing > 0.0, "the particle spacing must be > 0");
-  require(!terrain_.has_outside(), "terrains with no-data cells are not supported yet");
   const auto& g = terrain_.shape();
   const double width = static_cast<double>(g.nx) * g.dx, height = static_cast<double>(g.ny) * g.dy;
   for (std::size_t k = 0; k < p_.size(); ++k) {
     require(p_.x[k] >= 0.0 && p_.x[k] <= width && p_.y[k] >= 0.0 && p_.y[k] <= height,
             fmt::format("particle {} at ({}, {}) is outside the terrain", k, p_.x[k], p_.y[k]));
+    require(terrain_.inside()[cell_at(g, p_.x[k], p_.y[k])] != 0,
+            fmt::format("particle {} at ({}, {}) is in a cell outside the domain (an obstacle)", k,
+                        p_.x[k], p_.y[k]));
     require(p_.mass[k] > 0.0, fmt::format("particle {} has no mass", k));
   }
   rho_c_ = q.material.density;
@@ -71,13 +98,14 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
   sound_speed_ = material_.wave_speed();
   for (auto& st : p_.state) st.cohesion = c0_;
   const std::size_t n = p_.size();
-  for (auto* a : {&sxx_, &sxy_, &syy_, &rxx_, &rxy_, &ryy_, &ax_, &ay_}) a->assign(n, 0.0);
+  for (auto* a : {&sxx_, &sxy_, &syy_, &rxx_, &rxy_, &ryy_, &ax_, &ay_, &loss_, &averaged_})
+    a->assign(n, 0.0);
+  gradient_.assign(4 * n, 0.0);
 }
 
 HybridSolver::Bed HybridSolver::bed_at(double x, double y) const {
-  const auto& g = terrain_.shape();
-  const double bx = bilinear(g, terrain_.slope_x(), x, y);
-  const double by = bilinear(g, terrain_.slope_y(), x, y);
+  const double bx = bilinear(terrain_, terrain_.slope_x(), x, y);
+  const double by = bilinear(terrain_, terrain_.slope_y(), x, y);
   const double cos2 = 1.0 / (1.0 + bx * bx + by * by);
   const double gn = params_.gravity * cos2;
   return {-gn * bx, -gn * by, gn};
@@ -100,18 +128,57 @@ double HybridSolver::stable_time_step() const {
   return params_.courant * params_.smoothing_length / (sound_speed_ + vmax);
 }
 
-void HybridSolver::densities() {
+void HybridSolver::neighbours() {
+  // Two passes (count, then fill) so that every particle's list is in the
+  // same order for any number of threads.
+  grid_.build(p_.x, p_.y, kernel_.support());
   const auto n = static_cast<long>(p_.size());
   const double r2max = kernel_.support() * kernel_.support();
+  list_start_.assign(p_.size() + 1, 0);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     const double xi = p_.x[i], yi = p_.y[i];
-    double sum = 0.0;
+    std::size_t count = 0;
+    grid_.for_near(xi, yi, [&](int j) {
+      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
+      if (j != i && dx * dx + dy * dy < r2max) ++count;
+    });
+    list_start_[i + 1] = count;
+  }
+  for (std::size_t i = 0; i < p_.size(); ++i) list_start_[i + 1] += list_start_[i];
+  const std::size_t pairs = list_start_.back();
+  pair_j_.resize(pairs);
+  pair_dx_.resize(pairs);
+  pair_dy_.resize(pairs);
+  pair_w_.resize(pairs);
+  pair_dw_.resize(pairs);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double xi = p_.x[i], yi = p_.y[i];
+    std::size_t k = list_start_[i];
     grid_.for_near(xi, yi, [&](int j) {
       const double dx = xi - p_.x[j], dy = yi - p_.y[j];
       const double r2 = dx * dx + dy * dy;
-      if (r2 < r2max) sum += p_.mass[j] * kernel_.value(std::sqrt(r2));
+      if (j == i || r2 >= r2max) return;
+      const double r = std::sqrt(r2);
+      pair_j_[k] = j;
+      pair_dx_[k] = dx;
+      pair_dy_[k] = dy;
+      pair_w_[k] = kernel_.value(r);
+      pair_dw_[k] = kernel_.derivative_over_r(r);
+      ++k;
     });
+  }
+}
+
+void HybridSolver::densities() {
+  const auto n = static_cast<long>(p_.size());
+  const double self = kernel_.value(0.0);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    double sum = p_.mass[i] * self;
+    for (std::size_t k = list_start_[i]; k < list_start_[i + 1]; ++k)
+      sum += p_.mass[pair_j_[k]] * pair_w_[k];
     p_.areal[i] = sum;
     p_.depth[i] = sum / rho_c_;
   }
@@ -119,28 +186,42 @@ void HybridSolver::densities() {
 
 void HybridSolver::stresses(double dt) {
   const auto n = static_cast<long>(p_.size());
-  const double r2max = kernel_.support() * kernel_.support();
   const double eps = params_.artificial_stress;
+  // The velocity gradient (the form that pairs with the momentum equation's
+  // sum: the work of the stress is then exactly the forces' work).
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
-    const double xi = p_.x[i], yi = p_.y[i], ui = p_.u[i], vi = p_.v[i];
-    mpm::Mat3 l = mpm::Mat3::Zero();
-    grid_.for_near(xi, yi, [&](int j) {
-      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
-      const double r2 = dx * dx + dy * dy;
-      if (r2 >= r2max || j == i) return;
-      const double w = p_.mass[j] * kernel_.derivative_over_r(std::sqrt(r2));
+    const double ui = p_.u[i], vi = p_.v[i];
+    double l00 = 0.0, l01 = 0.0, l10 = 0.0, l11 = 0.0;
+    for (std::size_t k = list_start_[i]; k < list_start_[i + 1]; ++k) {
+      const int j = pair_j_[k];
+      const double dx = pair_dx_[k], dy = pair_dy_[k];
+      const double w = p_.mass[j] * pair_dw_[k];
       const double du = p_.u[j] - ui, dv = p_.v[j] - vi;
-      l(0, 0) += w * du * dx;
-      l(0, 1) += w * du * dy;
-      l(1, 0) += w * dv * dx;
-      l(1, 1) += w * dv * dy;
-    });
-    l /= p_.areal[i];
-    const double dilation = l(0, 0) + l(1, 1);
-    p_.dilation[i] = dilation;
+      l00 += w * du * dx;
+      l01 += w * du * dy;
+      l10 += w * dv * dx;
+      l11 += w * dv * dy;
+    }
+    const double inv = 1.0 / p_.areal[i];
+    gradient_[4 * i] = l00 * inv;
+    gradient_[4 * i + 1] = l01 * inv;
+    gradient_[4 * i + 2] = l10 * inv;
+    gradient_[4 * i + 3] = l11 * inv;
+    p_.dilation[i] = (l00 + l11) * inv;
+    loss_[i] = std::max(0.0, p_.dilation[i]) * dt;
+  }
+  if (nonlocal_ > 0.0) average_dilation();
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double xi = p_.x[i], yi = p_.y[i];
+    mpm::Mat3 l = mpm::Mat3::Zero();
+    l(0, 0) = gradient_[4 * i];
+    l(0, 1) = gradient_[4 * i + 1];
+    l(1, 0) = gradient_[4 * i + 2];
+    l(1, 1) = gradient_[4 * i + 3];
     mpm::MaterialState& st = p_.state[i];
-    material_.update(st, l, dt, dilation * dt);
+    material_.update(st, l, dt, nonlocal_ > 0.0 ? averaged_[i] : loss_[i]);
     const Bed bed = bed_at(xi, yi);
     const double h = p_.depth[i];
     const double pressure = lateral_force(h, st.cohesion, bed.normal_gravity);
@@ -172,25 +253,47 @@ void HybridSolver::stresses(double dt) {
   }
 }
 
+void HybridSolver::average_dilation() {
+  // The dilation that breaks bonds, averaged over the particles within 2 L
+  // with the cubic spline of smoothing length L = nonlocal_length, weighted
+  // by volume: the kernel of the plan-view MPM's average (mpm/nonlocal.hpp,
+  // half-width 2 L), so the crack's width does not follow the particles'.
+  const CubicSplineKernel w(nonlocal_);
+  far_.build(p_.x, p_.y, w.support());
+  const auto n = static_cast<long>(p_.size());
+  const double r2max = w.support() * w.support();
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double xi = p_.x[i], yi = p_.y[i];
+    double sum = 0.0, weight = 0.0;
+    far_.for_near(xi, yi, [&](int j) {
+      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= r2max) return;
+      const double wj = p_.mass[j] * w.value(std::sqrt(r2));
+      sum += wj * loss_[j];
+      weight += wj;
+    });
+    averaged_[i] = sum / weight;
+  }
+}
+
 void HybridSolver::accelerations() {
   const auto n = static_cast<long>(p_.size());
-  const double r2max = kernel_.support() * kernel_.support();
   const double l = params_.smoothing_length;
   const int exponent = params_.artificial_stress_exponent;
   const double alpha = params_.viscosity_alpha, beta = params_.viscosity_beta;
   const bool artificial = params_.artificial_stress > 0.0;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
-    const double xi = p_.x[i], yi = p_.y[i], ui = p_.u[i], vi = p_.v[i];
+    const double ui = p_.u[i], vi = p_.v[i];
     double axi = 0.0, ayi = 0.0;
-    grid_.for_near(xi, yi, [&](int j) {
-      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
-      const double r2 = dx * dx + dy * dy;
-      if (r2 >= r2max || j == i) return;
-      const double r = std::sqrt(r2);
+    for (std::size_t k = list_start_[i]; k < list_start_[i + 1]; ++k) {
+      const int j = pair_j_[k];
+      const double dx = pair_dx_[k], dy = pair_dy_[k];
       double txx = sxx_[i] + sxx_[j], txy = sxy_[i] + sxy_[j], tyy = syy_[i] + syy_[j];
       if (artificial) {
-        const double ratio = kernel_.value(r) / w_d0_;
+        const double ratio = pair_w_[k] / w_d0_;
         double f = ratio;
         for (int e = 1; e < exponent; ++e) f *= ratio;
         txx += f * (rxx_[i] + rxx_[j]);
@@ -199,16 +302,16 @@ void HybridSolver::accelerations() {
       }
       const double approach = (ui - p_.u[j]) * dx + (vi - p_.v[j]) * dy;
       if (approach < 0.0) {
-        const double mu = l * approach / (r2 + 0.01 * l * l);
+        const double mu = l * approach / (dx * dx + dy * dy + 0.01 * l * l);
         const double pi =
             (-alpha * sound_speed_ * mu + beta * mu * mu) / (0.5 * (p_.areal[i] + p_.areal[j]));
         txx -= pi;
         tyy -= pi;
       }
-      const double w = p_.mass[j] * kernel_.derivative_over_r(r);
+      const double w = p_.mass[j] * pair_dw_[k];
       axi += w * (txx * dx + txy * dy);
       ayi += w * (txy * dx + tyy * dy);
-    });
+    }
     ax_[i] = axi;
     ay_[i] = ayi;
   }
@@ -218,7 +321,12 @@ void HybridSolver::integrate(double dt) {
   const auto n = static_cast<long>(p_.size());
   const auto& g = terrain_.shape();
   const double width = static_cast<double>(g.nx) * g.dx, height = static_cast<double>(g.ny) * g.dy;
-  const double mu = params_.tan_basal_friction;
+  const double mu = params_.tan_basal_friction, wall_mu = params_.wall_friction;
+  const bool has_walls = terrain_.has_outside();
+  const auto& inside = terrain_.inside();
+  auto reduce = [](double w, double by) {
+    return std::abs(w) <= by ? 0.0 : w - std::copysign(by, w);
+  };
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     const Bed bed = bed_at(p_.x[i], p_.y[i]);
@@ -243,6 +351,24 @@ void HybridSolver::integrate(double dt) {
       y = std::clamp(y, 0.0, height);
       v = 0.0;
     }
+    // Cells outside the domain (no-data: obstacles) are walls along the
+    // grid's axes: a move into one is undone along that axis, its normal
+    // velocity removed and the tangential one reduced by wall_friction times
+    // that normal change (Coulomb), never reversed.
+    if (has_walls) {
+      const double x0 = p_.x[i], y0 = p_.y[i];
+      auto blocked = [&](double px, double py) { return !inside[cell_at(g, px, py)]; };
+      if (blocked(x, y0)) {
+        v = reduce(v, wall_mu * std::abs(u));
+        u = 0.0;
+        x = x0;
+      }
+      if (blocked(x, y)) {
+        u = reduce(u, wall_mu * std::abs(v));
+        v = 0.0;
+        y = y0;
+      }
+    }
     p_.u[i] = u;
     p_.v[i] = v;
     p_.x[i] = x;
@@ -257,7 +383,7 @@ void HybridSolver::integrate(double dt) {
 }
 
 void HybridSolver::step(double dt) {
-  grid_.build(p_.x, p_.y, kernel_.support());
+  neighbours();
   densities();
   stresses(dt);
   accelerations();

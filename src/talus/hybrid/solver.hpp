@@ -9,7 +9,12 @@
 //   velocity gradient L_i = sum_j (m_j / rho_j) (v_j - v_i) (x) grad_i W_ij
 //     (eqs. 79-80), which drives the Drucker-Prager stress with the Jaumann
 //     rate and the cohesion loss of eq. 26 (mpm::DruckerPrager, plane strain
-//     through the depth as the plan-view MPM);
+//     through the depth as the plan-view MPM), the dilation that drives the
+//     loss averaged over the material's nonlocal_length as in the plan-view
+//     MPM. The seed's eq. 79 prints (m_j / rho_j); with that form the stress
+//     does not do the work the forces do where the areal density varies, and
+//     a block's edges were unstable (a 1e-10 m/s perturbation grew to 0.9 m/s
+//     in 0.5 s): (1 / rho_i) sum_j m_j is used, the form that pairs with eq. 78;
 //   depth-integrated stress S_i = h_i sigma_i - P_i I, with P_i the
 //     Rankine-Bell lateral earth pressure of the weight (eq. 43) in its active
 //     state, int_0^h max(0, K_a gamma z - 2 c sqrt(K_a)) dz with
@@ -25,7 +30,8 @@
 //   the bed: gravity -g cos^2(theta) grad(b) and the basal Coulomb friction
 //     tan(delta) g cos^2(theta) per unit mass (eq. 36 with the weight as
 //     normal load), as an impulse that stops a particle and never reverses it;
-//   symplectic Euler: v += dt a, x += dt v; walls at the terrain's edges.
+//   symplectic Euler: v += dt a, x += dt v; walls at the terrain's edges and
+//     around its no-data cells (obstacles), with Coulomb friction.
 // Every loop gathers over neighbours (no scatter), so the result is the same
 // bits for any number of threads.
 #include <vector>
@@ -42,6 +48,7 @@ struct HybridParams {
   double smoothing_length = 0.0;  // l, m (the kernel's support is 2 l)
   mpm::MaterialParams material;   // model "drucker_prager"; density is rho_c
   double tan_basal_friction = 0.0;
+  double wall_friction = 0.0;  // mu against the domain's no-data cells (obstacles)
   double gravity = 9.81;
   double viscosity_alpha = 1.0;        // Monaghan's alpha_Pi (the seed: close to 1)
   double viscosity_beta = 1.0;         // beta_Pi
@@ -87,8 +94,10 @@ class HybridSolver {
     double gx, gy, normal_gravity;  // gravity's horizontal pull and g cos^2
   };
   Bed bed_at(double x, double y) const;
+  void neighbours();
   void densities();
   void stresses(double dt);
+  void average_dilation();
   void accelerations();
   void integrate(double dt);
 
@@ -97,11 +106,19 @@ class HybridSolver {
   Particles p_;
   CubicSplineKernel kernel_;
   mpm::DruckerPrager material_;
-  NeighbourGrid grid_;
+  NeighbourGrid grid_, far_;  // the kernel's neighbours; the nonlocal average's
   double rho_c_, c0_, eps_c_, k_active_, sqrt_k_active_, w_d0_, sound_speed_;
+  double nonlocal_ = 0.0;  // L of the cohesion loss's average (0: local)
   double time_ = 0.0;
   // Per particle: S / rho^2 and R (xx, xy, yy), the acceleration.
   std::vector<double> sxx_, sxy_, syy_, rxx_, rxy_, ryy_, ax_, ay_;
+  // This step's neighbour pairs, particle by particle (CSR): j, x_i - x_j,
+  // W_ij and dW/dr / r.
+  std::vector<std::size_t> list_start_;
+  std::vector<int> pair_j_;
+  std::vector<double> pair_dx_, pair_dy_, pair_w_, pair_dw_;
+  std::vector<double> gradient_;         // L per particle: xx, xy, yx, yy
+  std::vector<double> loss_, averaged_;  // max(0, tr D) dt, and its nonlocal average
 };
 
 }  // namespace talus::hybrid
