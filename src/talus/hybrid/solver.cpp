@@ -254,27 +254,56 @@ void HybridSolver::stresses(double dt) {
 }
 
 void HybridSolver::average_dilation() {
-  // The dilation that breaks bonds, averaged over the particles within 2 L
-  // with the cubic spline of smoothing length L = nonlocal_length, weighted
-  // by volume: the kernel of the plan-view MPM's average (mpm/nonlocal.hpp,
-  // half-width 2 L), so the crack's width does not follow the particles'.
-  const CubicSplineKernel w(nonlocal_);
-  far_.build(p_.x, p_.y, w.support());
-  const auto n = static_cast<long>(p_.size());
-  const double r2max = w.support() * w.support();
+  // The dilation that breaks bonds, averaged as the plan-view MPM averages
+  // it (mpm/nonlocal.hpp): mass-weighted tent functions onto a lattice of
+  // spacing L = nonlocal_length and back, a smooth kernel of half-width 2 L
+  // fixed in space, so the crack's width does not follow the particles'.
+  // Serial accumulation in particle order: the same bits on any team.
+  const std::size_t n = p_.size();
+  if (n == 0) return;
+  const double ell = nonlocal_;
+  const auto [xmin, xmax] = std::minmax_element(p_.x.begin(), p_.x.end());
+  const auto [ymin, ymax] = std::minmax_element(p_.y.begin(), p_.y.end());
+  const double x0 = *xmin - ell, y0 = *ymin - ell;
+  const auto nx = static_cast<std::size_t>((*xmax - x0) / ell) + 2;
+  const auto ny = static_cast<std::size_t>((*ymax - y0) / ell) + 2;
+  lattice_.assign(2 * nx * ny, 0.0);
+  auto corners = [&](std::size_t k, std::size_t& c, double& fx, double& fy) {
+    const double sx = (p_.x[k] - x0) / ell, sy = (p_.y[k] - y0) / ell;
+    const auto i = std::min(static_cast<std::size_t>(sx), nx - 2);
+    const auto j = std::min(static_cast<std::size_t>(sy), ny - 2);
+    fx = sx - static_cast<double>(i);
+    fy = sy - static_cast<double>(j);
+    c = j * nx + i;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t c;
+    double fx, fy;
+    corners(k, c, fx, fy);
+    const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+    const std::size_t node[4] = {c, c + 1, c + nx, c + nx + 1};
+    for (int q = 0; q < 4; ++q) {
+      lattice_[2 * node[q]] += w[q] * p_.mass[k] * loss_[k];
+      lattice_[2 * node[q] + 1] += w[q] * p_.mass[k];
+    }
+  }
+  const auto count = static_cast<long>(n);
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    const double xi = p_.x[i], yi = p_.y[i];
+  for (long k = 0; k < count; ++k) {
+    std::size_t c;
+    double fx, fy;
+    corners(static_cast<std::size_t>(k), c, fx, fy);
+    const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+    const std::size_t node[4] = {c, c + 1, c + nx, c + nx + 1};
     double sum = 0.0, weight = 0.0;
-    far_.for_near(xi, yi, [&](int j) {
-      const double dx = xi - p_.x[j], dy = yi - p_.y[j];
-      const double r2 = dx * dx + dy * dy;
-      if (r2 >= r2max) return;
-      const double wj = p_.mass[j] * w.value(std::sqrt(r2));
-      sum += wj * loss_[j];
-      weight += wj;
-    });
-    averaged_[i] = sum / weight;
+    for (int q = 0; q < 4; ++q) {
+      const double m = lattice_[2 * node[q] + 1];
+      if (m > 0.0) {
+        sum += w[q] * lattice_[2 * node[q]] / m;
+        weight += w[q];
+      }
+    }
+    averaged_[k] = weight > 0.0 ? sum / weight : loss_[k];
   }
 }
 

@@ -106,7 +106,7 @@ class HybridSolver {
   Particles p_;
   CubicSplineKernel kernel_;
   mpm::DruckerPrager material_;
-  NeighbourGrid grid_, far_;  // the kernel's neighbours; the nonlocal average's
+  NeighbourGrid grid_;
   double rho_c_, c0_, eps_c_, k_active_, sqrt_k_active_, w_d0_, sound_speed_;
   double nonlocal_ = 0.0;  // L of the cohesion loss's average (0: local)
   double time_ = 0.0;
@@ -119,6 +119,7 @@ class HybridSolver {
   std::vector<double> pair_dx_, pair_dy_, pair_w_, pair_dw_;
   std::vector<double> gradient_;         // L per particle: xx, xy, yx, yy
   std::vector<double> loss_, averaged_;  // max(0, tr D) dt, and its nonlocal average
+  std::vector<double> lattice_;          // the average's lattice: mass x loss, mass
 };
 
 }  // namespace talus::hybrid
