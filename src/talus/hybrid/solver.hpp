@@ -6,14 +6,14 @@
 //
 // Per step, for every particle i with neighbours j within the kernel's support:
 //   areal density  rho_i = sum_j m_j W_ij, depth h_i = rho_i / rho_c;
-//   velocity gradient L_i = sum_j (m_j / rho_j) (v_j - v_i) (x) grad_i W_ij
+//   velocity gradient L_i = (1 / rho_i) sum_j m_j (v_j - v_i) (x) grad_i W_ij
 //     (eqs. 79-80), which drives the Drucker-Prager stress with the Jaumann
 //     rate and the cohesion loss of eq. 26 (mpm::DruckerPrager, plane strain
 //     through the depth as the plan-view MPM), the dilation that drives the
 //     loss averaged over the material's nonlocal_length as in the plan-view
 //     MPM. The seed's eq. 79 prints (m_j / rho_j); with that form the stress
 //     does not do the work the forces do where the areal density varies, and
-//     a block's edges were unstable (a 1e-10 m/s perturbation grew to 0.9 m/s
+//     a block's edges were unstable (a 1e-10 m/s perturbation grew to 0.68 m/s
 //     in 0.5 s): (1 / rho_i) sum_j m_j is used, the form that pairs with eq. 78;
 //   depth-integrated stress S_i = h_i sigma_i - P_i I, with P_i the
 //     Rankine-Bell lateral earth pressure of the weight (eq. 43) in its active
