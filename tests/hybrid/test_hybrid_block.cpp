@@ -169,6 +169,37 @@ TEST(HybridBlock, SameBitsOnOneAndTwoThreads) {
   }
 }
 
+// A stiff block sliding at 1 m/s into a wall of no-data cells across its
+// path (flat bed, tan phi_b = 0.3; on its own it would stop after
+// 1 / (2 g 0.3) = 0.17 m, the wall is 0.1 m ahead): its front reaches the
+// wall, no particle ever enters the wall's cells, and the rebound dies out
+// (kinetic energy < 1 % of the start after 0.6 s).
+TEST(HybridBlock, ObstacleCellsAreWalls) {
+  runout::Terrain flat = plane(30, 20, kCell, 0.0);
+  std::vector<unsigned char> inside(flat.shape().cells(), 1);
+  for (std::size_t j = 0; j < 20; ++j)
+    for (std::size_t i = 20; i < 30; ++i) inside[flat.shape().index(i, j)] = 0;
+  runout::Terrain terrain(flat.shape(), flat.elevation(), inside);
+  const auto depth = block_depth(terrain.shape(), 4, 16, 5, 15, 0.2);
+  Seeded seeded = seed_particles(terrain.shape(), depth, 0.2 * kCell * kCell / 4, 2400.0, 1.0);
+  HybridSolver solver(terrain, stiff_params(0.3), seeded.particles, seeded.spacing);
+  const double wall = 20 * kCell, energy0 = solver.totals().kinetic_energy;
+  double reached = 0.0;
+  while (solver.time() < 0.6) {
+    solver.step(solver.stable_time_step());
+    for (double x : solver.particles().x) {
+      ASSERT_LE(x, wall) << "t = " << solver.time();
+      reached = std::max(reached, x);
+    }
+  }
+  EXPECT_GT(reached, wall - 0.5 * kCell);
+  EXPECT_LT(solver.totals().kinetic_energy, 0.01 * energy0);
+  // Particles may not start inside a wall.
+  Particles in_wall = seeded.particles;
+  in_wall.x[0] = wall + 0.01;
+  EXPECT_THROW(HybridSolver(terrain, stiff_params(0.3), in_wall, seeded.spacing), InputError);
+}
+
 TEST(HybridBlock, RefusesBadInput) {
   Block b = clay_block(30, 25, 0.0, 9, 8);
   HybridParams params = stiff_params(0.3);
