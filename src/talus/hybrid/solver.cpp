@@ -103,12 +103,23 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
   gradient_.assign(4 * n, 0.0);
 }
 
-HybridSolver::Bed HybridSolver::bed_at(double x, double y) const {
+HybridSolver::Bed HybridSolver::bed_at(double x, double y, double u, double v) const {
   const double bx = bilinear(terrain_, terrain_.slope_x(), x, y);
   const double by = bilinear(terrain_, terrain_.slope_y(), x, y);
   const double cos2 = 1.0 / (1.0 + bx * bx + by * by);
-  const double gn = params_.gravity * cos2;
-  return {-gn * bx, -gn * by, gn};
+  // A point held on the surface z = b(x, y) and moving with horizontal
+  // velocity u has the bed's reaction per unit mass (g + u^T Hess(b) u)
+  // cos^2 along the normal (the centripetal part as fv2d's bed load): its
+  // horizontal pull is that times -grad(b), and it is the friction's load.
+  double load = params_.gravity;
+  if (params_.curvature && (u != 0.0 || v != 0.0)) {
+    const double bxx = bilinear(terrain_, terrain_.curvature_xx(), x, y);
+    const double bxy = bilinear(terrain_, terrain_.curvature_xy(), x, y);
+    const double byy = bilinear(terrain_, terrain_.curvature_yy(), x, y);
+    load = std::max(0.0, load + bxx * u * u + 2.0 * bxy * u * v + byy * v * v);
+  }
+  const double gn = load * cos2;
+  return {-gn * bx, -gn * by, gn, params_.gravity * cos2};
 }
 
 double HybridSolver::lateral_force(double depth, double cohesion, double normal_gravity) const {
@@ -222,9 +233,9 @@ void HybridSolver::stresses(double dt) {
     l(1, 1) = gradient_[4 * i + 3];
     mpm::MaterialState& st = p_.state[i];
     material_.update(st, l, dt, nonlocal_ > 0.0 ? averaged_[i] : loss_[i]);
-    const Bed bed = bed_at(xi, yi);
+    const Bed bed = bed_at(xi, yi, 0.0, 0.0);
     const double h = p_.depth[i];
-    const double pressure = lateral_force(h, st.cohesion, bed.normal_gravity);
+    const double pressure = lateral_force(h, st.cohesion, bed.weight);
     const double inv_rho2 = 1.0 / (p_.areal[i] * p_.areal[i]);
     const double sxx = (h * st.stress(0, 0) - pressure) * inv_rho2;
     const double sxy = h * st.stress(0, 1) * inv_rho2;
@@ -358,11 +369,11 @@ void HybridSolver::integrate(double dt) {
   };
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
-    const Bed bed = bed_at(p_.x[i], p_.y[i]);
+    const Bed bed = bed_at(p_.x[i], p_.y[i], p_.u[i], p_.v[i]);
     double u = p_.u[i] + dt * (ax_[i] + bed.gx), v = p_.v[i] + dt * (ay_[i] + bed.gy);
     // Basal Coulomb friction as an impulse: it stops the particle, never
     // reverses it.
-    const double speed = std::hypot(u, v), stop = dt * mu * bed.normal_gravity;
+    const double speed = std::hypot(u, v), stop = dt * mu * bed.load;
     if (speed <= stop) {
       u = v = 0.0;
     } else if (stop > 0.0) {

@@ -27,9 +27,11 @@
 //     stress R against the tensile instability (eqs. 85-86: R's principal
 //     values -eps s / rho^2 for tensile principal values s of S, f_ij =
 //     W_ij / W(d0));
-//   the bed: gravity -g cos^2(theta) grad(b) and the basal Coulomb friction
-//     tan(delta) g cos^2(theta) per unit mass (eq. 36 with the weight as
-//     normal load), as an impulse that stops a particle and never reverses it;
+//   the bed: gravity -g_e cos^2(theta) grad(b) and the basal Coulomb
+//     friction tan(delta) g_e cos^2(theta) per unit mass (eq. 36 with the
+//     weight as normal load), g_e = g + u^T Hess(b) u with the centripetal
+//     load on curved ground (a point held on the bed then keeps its energy),
+//     the friction as an impulse that stops a particle and never reverses it;
 //   symplectic Euler: v += dt a, x += dt v; walls at the terrain's edges and
 //     around its no-data cells (obstacles), with Coulomb friction.
 // Every loop gathers over neighbours (no scatter), so the result is the same
@@ -55,6 +57,9 @@ struct HybridParams {
   double artificial_stress = 0.3;      // eps (Gray et al. 2001: 0.2-0.3)
   int artificial_stress_exponent = 4;  // n
   bool earth_pressure = true;
+  // The bed's centripetal load on curved ground (fv2d's term): gravity's
+  // pull and the friction's load use g + u^T Hess(b) u instead of g.
+  bool curvature = true;
   double courant = 0.25;  // dt = courant l / (c + max |v|)
 };
 
@@ -91,9 +96,11 @@ class HybridSolver {
 
  private:
   struct Bed {
-    double gx, gy, normal_gravity;  // gravity's horizontal pull and g cos^2
+    double gx, gy;  // the bed's horizontal pull on a particle
+    double load;    // its normal load per unit mass times cos^2: friction's
+    double weight;  // g cos^2, the load at rest (earth pressure)
   };
-  Bed bed_at(double x, double y) const;
+  Bed bed_at(double x, double y, double u, double v) const;
   void neighbours();
   void densities();
   void stresses(double dt);
