@@ -7,7 +7,7 @@
 // on 5 mm cells after 0.15 s (the crack is drawn by 0.05 s in the full
 // study, docs/validation/hybrid.md): the weak block's corner-line crack
 // reaches at least half the length; the strong one's stays within the front
-// third, where at least 90 % of its broken particles started.
+// third, where at least 95 % of its broken particles started.
 #include <gtest/gtest.h>
 
 #include "hybrid/clay_block_setup.hpp"
@@ -28,7 +28,7 @@ TEST(HybridClayBlock, WeakCracksAlongTheFlowStrongOnlyNearTheImpact) {
   const CrackMeasures weak = run_block(false), strong = run_block(true);
   EXPECT_GE(weak.corner_crack, 0.5);
   EXPECT_LE(strong.corner_crack, 1.0 / 3.0);
-  EXPECT_GE(strong.broken_in_front_third, 0.9);
+  EXPECT_GE(strong.broken_in_front_third, 0.95);
   std::printf("weak: crack %.3f, strong: crack %.3f, %.3f of its broken in the front third\n",
               weak.corner_crack, strong.corner_crack, strong.broken_in_front_third);
 }
