@@ -90,7 +90,6 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
   }
   rho_c_ = q.material.density;
   c0_ = q.material.cohesion;
-  eps_c_ = q.material.critical_volume_strain;
   const double s = std::sin(q.material.friction_angle);
   k_active_ = (1.0 - s) / (1.0 + s);  // Rankine (eq. 42)
   sqrt_k_active_ = std::sqrt(k_active_);
@@ -123,8 +122,8 @@ HybridSolver::Bed HybridSolver::bed_at(double x, double y, double u, double v) c
 }
 
 double HybridSolver::lateral_force(double depth, double cohesion, double normal_gravity) const {
-  if (!params_.earth_pressure || depth <= 0.0) return 0.0;
   const double gamma = rho_c_ * normal_gravity;
+  if (!params_.earth_pressure || depth <= 0.0 || gamma <= 0.0) return 0.0;
   // The active pressure K gamma z - 2 c sqrt(K) is zero down to z0 (Bell's
   // tension zone, which carries nothing), then grows linearly.
   const double z0 = 2.0 * cohesion * sqrt_k_active_ / (k_active_ * gamma);

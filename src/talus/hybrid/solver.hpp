@@ -114,7 +114,7 @@ class HybridSolver {
   CubicSplineKernel kernel_;
   mpm::DruckerPrager material_;
   NeighbourGrid grid_;
-  double rho_c_, c0_, eps_c_, k_active_, sqrt_k_active_, w_d0_, sound_speed_;
+  double rho_c_, c0_, k_active_, sqrt_k_active_, w_d0_, sound_speed_;
   double nonlocal_ = 0.0;  // L of the cohesion loss's average (0: local)
   double time_ = 0.0;
   // Per particle: S / rho^2 and R (xx, xy, yy), the acceleration.
