@@ -41,6 +41,22 @@ TEST(Raster, GeoTiffRoundTrip) {
   EXPECT_TRUE(back.is_nodata(back.at(3, 0)));
 }
 
+// A run killed while writing a GeoTIFF leaves a cut temporary file beside it;
+// the resumed run writes the same file again and must succeed (GDAL's create
+// tried to open the stale file to delete it and left that error behind:
+// tests/app/test_resume_runout.sh failed "cannot write ... Unable to open
+// ....tif.tmp to obtain file list").
+TEST(Raster, GeoTiffOverAStaleTemporaryFile) {
+  Raster r;
+  r.nx = 3, r.ny = 2, r.dx = r.dy = 1.0;
+  r.values = {1, 2, 3, 4, 5, 6};
+  const fs::path file = temp_dir() / "stale.tif";
+  std::ofstream(file.string() + ".tmp") << "II*\0 a cut GeoTIFF";
+  EXPECT_NO_THROW(write_geotiff(file.string(), r));
+  EXPECT_EQ(read_raster(file.string()).values, r.values);
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+}
+
 TEST(Raster, ReadsEsriAsciiGrid) {
   const fs::path file = temp_dir() / "grid.asc";
   std::ofstream(file) << "ncols 3\nnrows 2\nxllcorner 100\nyllcorner 200\ncellsize 10\n"

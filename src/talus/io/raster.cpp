@@ -145,6 +145,11 @@ void write_geotiff(const std::string& path, const Raster& r) {
     std::filesystem::remove(temp, ignored);
     throw RunError(fmt::format("cannot write '{}': {}", path, why));
   };
+  // A run killed while writing leaves its temporary file; GDAL's create
+  // would try to open it as a dataset to delete it and leave that failure as
+  // the last error, so a resumed run's write would be taken as failed.
+  std::error_code stale;
+  std::filesystem::remove(temp, stale);
   CPLErrorReset();
   char* options[] = {const_cast<char*>("COMPRESS=DEFLATE"), nullptr};
   GDALDatasetH ds = GDALCreate(driver, temp.c_str(), static_cast<int>(r.nx), static_cast<int>(r.ny),
