@@ -22,7 +22,6 @@ struct Particles {
   std::vector<double> areal;  // kg/m^2, sum_j m_j W_ij (each step)
   std::vector<double> depth;  // m, areal / rho_c (vertical)
   std::vector<mpm::MaterialState> state;
-  std::vector<double> dilation;  // tr(D) of the last step, 1/s
 
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n) {
@@ -34,7 +33,6 @@ struct Particles {
     areal.resize(n);
     depth.resize(n);
     state.resize(n);
-    dilation.resize(n);
   }
 };
 

@@ -80,13 +80,16 @@ HybridSolver::HybridSolver(runout::Terrain terrain, HybridParams params, Particl
   require(particle_spacing > 0.0, "the particle spacing must be > 0");
   const auto& g = terrain_.shape();
   const double width = static_cast<double>(g.nx) * g.dx, height = static_cast<double>(g.ny) * g.dy;
+  // The messages are formatted only for a particle that fails.
   for (std::size_t k = 0; k < p_.size(); ++k) {
-    require(p_.x[k] >= 0.0 && p_.x[k] <= width && p_.y[k] >= 0.0 && p_.y[k] <= height,
-            fmt::format("particle {} at ({}, {}) is outside the terrain", k, p_.x[k], p_.y[k]));
-    require(terrain_.inside()[cell_at(g, p_.x[k], p_.y[k])] != 0,
-            fmt::format("particle {} at ({}, {}) is in a cell outside the domain (an obstacle)", k,
-                        p_.x[k], p_.y[k]));
-    require(p_.mass[k] > 0.0, fmt::format("particle {} has no mass", k));
+    const double x = p_.x[k], y = p_.y[k];
+    if (!(x >= 0.0 && x <= width && y >= 0.0 && y <= height))
+      require(false, fmt::format("particle {} at ({}, {}) is outside the terrain", k, x, y));
+    if (!terrain_.inside()[cell_at(g, x, y)])
+      require(false, fmt::format("particle {} at ({}, {}) is in a cell outside the domain (an "
+                                 "obstacle)",
+                                 k, x, y));
+    if (!(p_.mass[k] > 0.0)) require(false, fmt::format("particle {} has no mass", k));
   }
   rho_c_ = q.material.density;
   c0_ = q.material.cohesion;
@@ -218,8 +221,7 @@ void HybridSolver::stresses(double dt) {
     gradient_[4 * i + 1] = l01 * inv;
     gradient_[4 * i + 2] = l10 * inv;
     gradient_[4 * i + 3] = l11 * inv;
-    p_.dilation[i] = (l00 + l11) * inv;
-    loss_[i] = std::max(0.0, p_.dilation[i]) * dt;
+    loss_[i] = std::max(0.0, (l00 + l11) * inv) * dt;
   }
   if (nonlocal_ > 0.0) average_dilation();
 #pragma omp parallel for schedule(static)
